@@ -1,0 +1,51 @@
+#pragma once
+// Bonds (links) of the owned particles, stored with their particle in compressed rows:
+// particle i's bonds are [begin(i), end(i)). A bond names its partner by global ID; the
+// engine keeps partner(b), the partner's local index (owned or ghost), up to date after
+// every shuffle, so bonds survive shuffles and migration with no help from the model.
+// Each particle's bonds are sorted by partner global ID, which fixes the order in which a
+// model sums them: results do not depend on where particles sit in memory.
+#include <cstdint>
+#include <vector>
+
+#include "engine/schema.hpp"
+
+namespace pdq {
+
+class Bonds {
+ public:
+  explicit Bonds(int nAttr = 0) : nAttr_(nAttr) {}
+
+  std::size_t count() const { return partnerGid_.size(); }
+  int nAttr() const { return nAttr_; }
+  std::size_t begin(std::size_t i) const { return start_[i]; }
+  std::size_t end(std::size_t i) const { return start_[i + 1]; }
+  std::int32_t partner(std::size_t b) const { return partner_[b]; }
+  Gid partnerGid(std::size_t b) const { return partnerGid_[b]; }
+  double* attr(std::size_t b) { return &attr_[b * nAttr_]; }
+  const double* attr(std::size_t b) const { return &attr_[b * nAttr_]; }
+  bool empty() const { return partnerGid_.empty(); }
+
+  // --- building, in a model's setup: add pairs, then the engine calls finish() ---
+  void add(std::size_t owner, Gid partner);
+  // Sorts each owner's bonds by partner ID, rejects duplicates, zeroes attributes.
+  void finish(std::size_t nOwned);
+
+  // --- used by the engine ---
+  void resetEmpty(std::size_t nOwned);
+  // New owned particle k takes old particle perm[k]'s bonds (departed ones are dropped).
+  void permute(const std::vector<std::size_t>& perm);
+  // Appends the bonds of one newly arrived owned particle (at the end of the owned range).
+  void appendParticle(const Gid* partners, const double* attrs, std::size_t n);
+  std::vector<std::int32_t>& partners() { return partner_; }
+
+ private:
+  int nAttr_;
+  std::vector<std::uint64_t> start_{0};
+  std::vector<Gid> partnerGid_;
+  std::vector<std::int32_t> partner_;
+  std::vector<double> attr_;
+  std::vector<std::pair<std::size_t, Gid>> pending_;
+};
+
+}  // namespace pdq

@@ -1,0 +1,130 @@
+#include "engine/comm.hpp"
+
+#include <algorithm>
+
+namespace pdq {
+
+Comm::Comm(MPI_Comm comm) : comm_(comm) {
+  MPI_Comm_rank(comm_, &rank_);
+  MPI_Comm_size(comm_, &size_);
+}
+
+void Comm::sendrecv(const std::vector<char>& out, int dest, std::vector<char>& in, int src,
+                    int tag) {
+  MPI_Request req = MPI_REQUEST_NULL;
+  if (dest >= 0) {
+    MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_BYTE, dest, tag, comm_, &req);
+    if (dest != rank_) {
+      ++messages_;
+      bytes_ += out.size();
+    }
+  }
+  in.clear();
+  if (src >= 0) {
+    MPI_Status st;
+    MPI_Probe(src, tag, comm_, &st);
+    int n = 0;
+    MPI_Get_count(&st, MPI_BYTE, &n);
+    in.resize(n);
+    MPI_Recv(in.data(), n, MPI_BYTE, src, tag, comm_, MPI_STATUS_IGNORE);
+  }
+  MPI_Wait(&req, MPI_STATUS_IGNORE);
+}
+
+void Comm::sendrecvKnown(const double* out, std::size_t nOut, int dest, double* in, std::size_t nIn,
+                         int src, int tag) {
+  if (dest >= 0 && dest != rank_) {
+    ++messages_;
+    bytes_ += nOut * sizeof(double);
+  }
+  MPI_Sendrecv(out, static_cast<int>(nOut), MPI_DOUBLE, dest >= 0 ? dest : MPI_PROC_NULL, tag, in,
+               static_cast<int>(nIn), MPI_DOUBLE, src >= 0 ? src : MPI_PROC_NULL, tag, comm_,
+               MPI_STATUS_IGNORE);
+}
+
+double Comm::max(double v) const {
+  double r;
+  MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MAX, comm_);
+  return r;
+}
+
+double Comm::min(double v) const {
+  double r;
+  MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MIN, comm_);
+  return r;
+}
+
+long Comm::sum(long v) const {
+  long r;
+  MPI_Allreduce(&v, &r, 1, MPI_LONG, MPI_SUM, comm_);
+  return r;
+}
+
+bool Comm::any(bool v) const {
+  int x = v ? 1 : 0, r = 0;
+  MPI_Allreduce(&x, &r, 1, MPI_INT, MPI_MAX, comm_);
+  return r != 0;
+}
+
+void Comm::exactSum(ExactSum& acc) const {
+  acc.normalize();
+  MPI_Allreduce(MPI_IN_PLACE, acc.limbs().data(), ExactSum::kLimbs, MPI_INT64_T, MPI_SUM, comm_);
+  MPI_Allreduce(MPI_IN_PLACE, acc.specials().data(), 3, MPI_INT64_T, MPI_SUM, comm_);
+  acc.normalize();
+}
+
+double Comm::sum(ExactSum& acc) const {
+  exactSum(acc);
+  return acc.value();
+}
+
+std::vector<std::vector<char>> Comm::gather(const std::vector<char>& block) const {
+  int n = static_cast<int>(block.size());
+  std::vector<int> counts(size_), displs(size_);
+  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm_);
+  std::vector<char> all;
+  if (root()) {
+    for (int r = 1; r < size_; ++r) displs[r] = displs[r - 1] + counts[r - 1];
+    all.resize(size_ ? displs[size_ - 1] + counts[size_ - 1] : 0);
+  }
+  MPI_Gatherv(block.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, 0,
+              comm_);
+  std::vector<std::vector<char>> out;
+  if (root())
+    for (int r = 0; r < size_; ++r)
+      out.emplace_back(all.begin() + displs[r], all.begin() + displs[r] + counts[r]);
+  return out;
+}
+
+std::vector<char> Comm::broadcast(std::vector<char> data) const {
+  long n = static_cast<long>(data.size());
+  MPI_Bcast(&n, 1, MPI_LONG, 0, comm_);
+  data.resize(n);
+  MPI_Bcast(data.data(), static_cast<int>(n), MPI_BYTE, 0, comm_);
+  return data;
+}
+
+void Comm::barrier() const { MPI_Barrier(comm_); }
+
+void Comm::abort(int code) const {
+  MPI_Abort(comm_, code);
+  std::abort();
+}
+
+MpiSession::MpiSession(int* argc, char*** argv) {
+  int initialised = 0;
+  MPI_Initialized(&initialised);
+  if (!initialised) {
+    int provided = 0;
+    MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+    owns_ = true;
+  }
+}
+
+MpiSession::~MpiSession() {
+  int finalised = 0;
+  MPI_Finalized(&finalised);
+  if (owns_ && !finalised) MPI_Finalize();
+}
+
+}  // namespace pdq

@@ -1,0 +1,63 @@
+#pragma once
+// The only place that calls MPI. Point-to-point messages are counted (messages and bytes
+// sent to other ranks) so a run can report them per step, as the thesis's Table 3.5.
+#include <mpi.h>
+
+#include <cstdint>
+#include <vector>
+
+#include "engine/exact_sum.hpp"
+
+namespace pdq {
+
+class Comm {
+ public:
+  // MPI must be initialised (see MpiSession). Tests run several simulations side by side
+  // on sub-communicators; the pdq command uses MPI_COMM_WORLD.
+  explicit Comm(MPI_Comm comm = MPI_COMM_WORLD);
+  int rank() const { return rank_; }
+  int size() const { return size_; }
+  bool root() const { return rank_ == 0; }
+
+  // Sends `out` to `dest` and receives from `src` (either may be -1: nobody). The receive
+  // size is learnt from the message itself, so this is exactly one message per call.
+  void sendrecv(const std::vector<char>& out, int dest, std::vector<char>& in, int src, int tag);
+  // Same with the receive size known in advance (the halo exchange).
+  void sendrecvKnown(const double* out, std::size_t nOut, int dest, double* in, std::size_t nIn,
+                     int src, int tag);
+
+  double max(double v) const;
+  double min(double v) const;
+  long sum(long v) const;
+  bool any(bool v) const;
+  double sum(ExactSum& acc) const;  // exact, order-independent global sum
+  void exactSum(ExactSum& acc) const;
+  // Gathers variable-length byte blocks on rank 0 (empty elsewhere).
+  std::vector<std::vector<char>> gather(const std::vector<char>& block) const;
+  std::vector<char> broadcast(std::vector<char> data) const;  // from rank 0
+  void barrier() const;
+  [[noreturn]] void abort(int code) const;
+
+  std::uint64_t messages() const { return messages_; }
+  std::uint64_t bytes() const { return bytes_; }
+  void resetCounters() { messages_ = bytes_ = 0; }
+
+ private:
+  MPI_Comm comm_;
+  int rank_ = 0, size_ = 1;
+  std::uint64_t messages_ = 0, bytes_ = 0;
+};
+
+// RAII: MPI_Init_thread on construction (if not yet initialised), MPI_Finalize on exit.
+class MpiSession {
+ public:
+  MpiSession(int* argc, char*** argv);
+  ~MpiSession();
+  MpiSession(const MpiSession&) = delete;
+  MpiSession& operator=(const MpiSession&) = delete;
+
+ private:
+  bool owns_ = false;
+};
+
+}  // namespace pdq

@@ -1,0 +1,76 @@
+#pragma once
+// What a model sees of the engine: the particles of its procCube (owned first, ghosts
+// after), their bonds, the clock, canonical neighbour iteration, ghost refreshes of
+// chosen attributes, and global reductions that give the same bits on any number of
+// ranks. Nothing here exposes MPI or rank boundaries.
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "engine/bonds.hpp"
+#include "engine/exact_sum.hpp"
+#include "engine/particles.hpp"
+#include "engine/proccube.hpp"
+
+namespace pdq {
+
+class Context {
+ public:
+  Context(Particles& p, Bonds& b, ProcCube& cube, Comm& comm, std::ostream& log)
+      : particles(p), bonds(b), cube_(cube), comm_(comm), log_(log) {}
+
+  Particles& particles;
+  Bonds& bonds;
+
+  long step() const { return step_; }    // the step being computed (1-based in the loop)
+  long steps() const { return steps_; }  // the last step of the run
+  double dt() const { return dt_; }
+  double time() const { return step_ * dt_; }
+  void setDt(double dt) { dt_ = dt; }
+  int dim() const { return cube_.decomposition().dim(); }
+  const Domain& domain() const { return cube_.decomposition().domain(); }
+
+  // Every particle j near owned particle i (same or adjacent cell), canonical order.
+  template <class F>
+  void forEachNearby(std::size_t i, F&& f) const {
+    cube_.forEachNearby(i, std::forward<F>(f));
+  }
+  // Copies the listed alterable columns of the owned particles to their ghosts (e.g. a
+  // state-based model's dilatation between its two force passes).
+  void refreshGhosts(const std::vector<int>& alterColumns) { cube_.halo(alterColumns); }
+
+  // Global reductions, identical on every rank and for every processor grid.
+  double sum(ExactSum& acc) const { return comm_.sum(acc); }
+  template <class F>
+  double sumOwned(F&& value) const {
+    ExactSum acc;
+    for (std::size_t i = 0; i < particles.owned(); ++i) acc.add(value(i));
+    return comm_.sum(acc);
+  }
+  double max(double v) const { return comm_.max(v); }
+  double min(double v) const { return comm_.min(v); }
+  long count(long v) const { return comm_.sum(v); }
+  bool any(bool v) const { return comm_.any(v); }
+
+  // Ends the run after this step (the reason is logged). Must be called on every rank
+  // alike, i.e. decided from global reductions.
+  void requestStop(const std::string& reason) { stopReason_ = reason; }
+  const std::string& stopReason() const { return stopReason_; }
+  // Lines for debug.txt (each rank writes its own section) and for the terminal (rank 0).
+  std::ostream& log() { return log_; }
+  bool root() const { return comm_.root(); }
+
+  // --- set by the engine ---
+  void setStep(long s) { step_ = s; }
+  void setSteps(long s) { steps_ = s; }
+
+ private:
+  ProcCube& cube_;
+  Comm& comm_;
+  std::ostream& log_;
+  long step_ = 0, steps_ = 0;
+  double dt_ = 0;
+  std::string stopReason_;
+};
+
+}  // namespace pdq

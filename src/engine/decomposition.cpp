@@ -1,0 +1,127 @@
+#include "engine/decomposition.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "engine/error.hpp"
+
+namespace pdq {
+
+static int firstCell(int c, int nCells, int nProcs) {
+  return static_cast<int>((static_cast<long>(c) * nCells) / nProcs);
+}
+
+Decomposition::Decomposition(const Domain& domain, double minCellSize, std::array<int, 3> nP,
+                             int nRanks, int rank, const std::string& source)
+    : dom_(domain) {
+  if (!(minCellSize > 0)) throw InputError(source, 0, "minimum cell size must be positive");
+  for (int a = 0; a < 3; ++a) {
+    const double L = dom_.length(a);
+    if (!active(a)) {
+      nGC_[a] = 1;
+    } else {
+      if (!(L > 0))
+        throw InputError(source, 0, "domain has no extent along axis " + std::to_string(a));
+      nGC_[a] = std::max(1, static_cast<int>(std::floor(L / minCellSize)));
+      if (dom_.periodic[a] && nGC_[a] < 3) {
+        std::ostringstream os;
+        os << "periodic axis "
+           << "XYZ"[a] << " of length " << L << " holds fewer than 3 cells of " << minCellSize
+           << "; enlarge the box or reduce the minimum cell size";
+        throw InputError(source, 0, os.str());
+      }
+    }
+    cell_[a] = L > 0 ? L / nGC_[a] : 1.0;
+  }
+  const bool automatic = nP[0] <= 0 || nP[1] <= 0 || nP[2] <= 0;
+  if (automatic) {
+    // The grid that fits the ranks, respects the cell counts and cuts the least area.
+    double best = std::numeric_limits<double>::infinity();
+    for (int px = 1; px <= nRanks; ++px)
+      for (int py = 1; px * py <= nRanks; ++py) {
+        if (nRanks % (px * py)) continue;
+        const int pz = nRanks / (px * py);
+        const std::array<int, 3> p{px, py, pz};
+        bool ok = true;
+        for (int a = 0; a < 3; ++a) ok &= p[a] <= nGC_[a] && (active(a) || p[a] == 1);
+        if (!ok) continue;
+        double cost = 0;
+        for (int a = 0; a < 3; ++a) {
+          double area = 1;
+          for (int b = 0; b < 3; ++b)
+            if (b != a && active(b)) area *= dom_.length(b);
+          cost += (p[a] - (dom_.periodic[a] ? 0 : 1)) * area;
+        }
+        if (cost < best) {
+          best = cost;
+          nP_ = p;
+        }
+      }
+    if (!std::isfinite(best)) {
+      std::ostringstream os;
+      os << nRanks << " ranks do not fit a domain of " << nGC_[0] << " x " << nGC_[1] << " x "
+         << nGC_[2] << " cells (each rank needs at least one cell per active axis)";
+      throw InputError(source, 0, os.str());
+    }
+  } else {
+    nP_ = nP;
+    if (nP_[0] * nP_[1] * nP_[2] != nRanks) {
+      std::ostringstream os;
+      os << "processor grid " << nP_[0] << " x " << nP_[1] << " x " << nP_[2] << " needs "
+         << nP_[0] * nP_[1] * nP_[2] << " ranks but the run has " << nRanks;
+      throw InputError(source, 0, os.str());
+    }
+    for (int a = 0; a < 3; ++a) {
+      if (nP_[a] > nGC_[a]) {
+        std::ostringstream os;
+        os << "processor grid has " << nP_[a] << " ranks along "
+           << "XYZ"[a] << " but the domain has only " << nGC_[a]
+           << " cells there (cell size >= " << minCellSize << ")";
+        throw InputError(source, 0, os.str());
+      }
+    }
+  }
+  me_ = {rank % nP_[0], (rank / nP_[0]) % nP_[1], rank / (nP_[0] * nP_[1])};
+  for (int a = 0; a < 3; ++a) {
+    lo_[a] = firstCell(me_[a], nGC_[a], nP_[a]);
+    hi_[a] = firstCell(me_[a] + 1, nGC_[a], nP_[a]);
+  }
+}
+
+double Decomposition::minActiveCellSize() const {
+  double m = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < dim(); ++a) m = std::min(m, cell_[a]);
+  return m;
+}
+
+int Decomposition::neighbour(int a, int dir) const {
+  if (!active(a)) return -1;
+  std::array<int, 3> c = me_;
+  c[a] += dir;
+  if (c[a] < 0 || c[a] >= nP_[a]) {
+    if (!dom_.periodic[a]) return -1;
+    c[a] = (c[a] + nP_[a]) % nP_[a];
+  }
+  return rankOf(c);
+}
+
+bool Decomposition::wraps(int a, int dir) const {
+  if (!active(a) || !dom_.periodic[a]) return false;
+  return dir > 0 ? me_[a] == nP_[a] - 1 : me_[a] == 0;
+}
+
+int Decomposition::globalCell(int a, double x) const {
+  if (!active(a)) return 0;
+  return static_cast<int>(std::floor((x - dom_.lo[a]) / cell_[a]));
+}
+
+int Decomposition::ownerCoord(int a, int g) const {
+  // Inverse of firstCell: the largest c with firstCell(c) <= g.
+  int c = static_cast<int>((static_cast<long>(g) * nP_[a]) / nGC_[a]);
+  while (c + 1 < nP_[a] && firstCell(c + 1, nGC_[a], nP_[a]) <= g) ++c;
+  while (c > 0 && firstCell(c, nGC_[a], nP_[a]) > g) --c;
+  return c;
+}
+
+}  // namespace pdq

@@ -1,0 +1,55 @@
+#pragma once
+// Spatial decomposition (thesis §3.3.1). The domain is divided into one global lattice of
+// cells no smaller than the minimum cell size; each rank's core is a block of whole cells,
+// so the cell grid — and with it the order in which neighbours are visited — is the same
+// whatever the processor grid. A 2D problem has one cell layer in Z (a 1D one also one in
+// Y) and exchanges nothing along the inactive axes.
+#include <array>
+#include <string>
+
+namespace pdq {
+
+struct Domain {
+  std::array<double, 3> lo{}, hi{};
+  std::array<bool, 3> periodic{};
+  int dim = 3;  // active axes are 0 .. dim-1
+  double length(int a) const { return hi[a] - lo[a]; }
+};
+
+class Decomposition {
+ public:
+  // nP: processors per axis, 0 = choose automatically. Throws InputError (naming
+  // `source`) when the grid does not fit the ranks or has more ranks than cells.
+  Decomposition(const Domain& domain, double minCellSize, std::array<int, 3> nP, int nRanks,
+                int rank, const std::string& source = "processor grid");
+
+  const Domain& domain() const { return dom_; }
+  int dim() const { return dom_.dim; }
+  bool active(int a) const { return a < dom_.dim; }
+  int globalCells(int a) const { return nGC_[a]; }
+  double cellSize(int a) const { return cell_[a]; }
+  double minActiveCellSize() const;
+  int procs(int a) const { return nP_[a]; }
+  int coord(int a) const { return me_[a]; }
+  int coreLo(int a) const { return lo_[a]; }  // first global cell of the core
+  int coreHi(int a) const { return hi_[a]; }  // one past the last
+  int coreCells(int a) const { return hi_[a] - lo_[a]; }
+
+  // Rank of the neighbouring procCube in direction dir (+1/-1) along a, or -1 at a
+  // non-periodic domain boundary. With one rank along a periodic axis, that is this rank.
+  int neighbour(int a, int dir) const;
+  // True when a message sent in direction dir along a wraps around a periodic boundary.
+  bool wraps(int a, int dir) const;
+  int rankOf(std::array<int, 3> c) const { return (c[2] * nP_[1] + c[1]) * nP_[0] + c[0]; }
+  // Global cell of coordinate x along a (may be <0 or >= globalCells when outside).
+  int globalCell(int a, double x) const;
+  // Processor coordinate along a that owns global cell g (0 <= g < globalCells).
+  int ownerCoord(int a, int g) const;
+
+ private:
+  Domain dom_;
+  std::array<int, 3> nGC_{1, 1, 1}, nP_{1, 1, 1}, me_{0, 0, 0}, lo_{}, hi_{};
+  std::array<double, 3> cell_{};
+};
+
+}  // namespace pdq

@@ -1,0 +1,71 @@
+#pragma once
+// The model interface: the physics, which the engine knows nothing about. A model is one
+// folder under src/models/ (or a plugin library) and registers itself by name in one line:
+//
+//     PDQ_REGISTER_MODEL(MyModel, "mymodel", "what it simulates");
+//
+// The engine calls, in order:
+//   configure(params)        read parameters (unknown ones are errors afterwards)
+//   schema(), horizon(), shuffles()
+//   setup(ctx)               once: bonds (ctx.bonds.add), time step (ctx.setDt)
+//   [restart values are loaded here]
+//   prepare(ctx)             once, after restart: anything derived from current state
+//   every step: force(ctx) -> integrate(ctx) -> engine exchange/shuffle -> outputs
+//   neighboursChanged(ctx)   after every shuffle (shuffling models only)
+// A model writes only its owned particles (i < particles.owned()) and reads neighbours
+// through the ghosts; it never calls MPI. See src/models/spring/ for a commented example.
+#include <functional>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/context.hpp"
+#include "engine/params.hpp"
+#include "engine/schema.hpp"
+
+namespace pdq {
+
+class Model {
+ public:
+  virtual ~Model() = default;
+
+  virtual void configure(const Params& params) = 0;
+  virtual Schema schema() const = 0;
+  // Radius beyond which two particles never interact (at the positions cells are built
+  // from: reference positions for non-shuffling models, current ones otherwise).
+  virtual double horizon() const = 0;
+  // True when particles change neighbours (molecular dynamics): the engine then shuffles
+  // particles between cells and ranks, and bins them by current position.
+  virtual bool shuffles() const { return false; }
+
+  virtual void setup(Context&) {}
+  virtual void prepare(Context&) {}
+  virtual void neighboursChanged(Context&) {}
+  virtual void force(Context& ctx) = 0;
+  virtual void integrate(Context& ctx) = 0;
+
+  // Per-particle derived quantities for visual output (damage, energy, ...).
+  virtual std::vector<std::string> fields() const { return {}; }
+  virtual void field(const Context&, int /*k*/, std::span<double> /*ownedValues*/) const {}
+  // Global quantities for the history file (load, displacement, energies); called on
+  // every rank at output steps, so they may use the context's reductions.
+  virtual std::vector<std::string> globals() const { return {}; }
+  virtual std::vector<double> globalValues(Context&) { return {}; }
+};
+
+class ModelRegistry {
+ public:
+  using Factory = std::function<std::unique_ptr<Model>()>;
+  static bool add(const std::string& name, const std::string& description, Factory f);
+  // Throws InputError (naming `source`) for an unknown name, suggesting the nearest.
+  static std::unique_ptr<Model> create(const std::string& name, const std::string& source = "",
+                                       int line = 0);
+  static std::vector<std::pair<std::string, std::string>> list();  // name, description
+};
+
+}  // namespace pdq
+
+#define PDQ_REGISTER_MODEL(Class, name, description)                                     \
+  static const bool pdq_registered_##Class [[maybe_unused]] = ::pdq::ModelRegistry::add( \
+      name, description, [] { return std::unique_ptr<::pdq::Model>(new Class()); })

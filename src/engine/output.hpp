@@ -1,0 +1,37 @@
+#pragma once
+// Outputs written during a run (restart files, time histories, visual output). Each is
+// called on every rank at its steps and gathers what it needs through the engine.
+#include <string>
+
+#include "engine/comm.hpp"
+#include "engine/context.hpp"
+
+namespace pdq {
+
+class Model;
+
+struct OutputContext {
+  Context& ctx;
+  Model& model;
+  Comm& comm;
+  const std::string& outDir;
+  long step;
+};
+
+class Output {
+ public:
+  explicit Output(long every) : every_(every) {}
+  virtual ~Output() = default;
+  // Due at multiples of `every` (0: never during the run) and, if finalToo(), at the end.
+  virtual bool due(long step) const { return every_ > 0 && step % every_ == 0; }
+  virtual bool atEnd() const { return false; }
+  virtual void write(OutputContext& out) = 0;
+  // Called once after the last step (rename temporary files into place, etc.).
+  virtual void finish(OutputContext&) {}
+  long every() const { return every_; }
+
+ private:
+  long every_;
+};
+
+}  // namespace pdq

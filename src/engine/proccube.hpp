@@ -1,0 +1,107 @@
+#pragma once
+// The procCube of one rank: its core cells (owned particles) and the one-cell skin around
+// them (ghost copies of the neighbours' wall cells), with
+//   * the border pass, which rebuilds the skin with Plimpton's six steps Xp, Xn, Yp, Yn,
+//     Zp, Zn — later steps forward what earlier ones received, so edges and corners
+//     arrive without diagonal messages — and records the exchange plan;
+//   * the halo exchange, which replays that plan every step and sends only the wall
+//     particles' alterable attributes, one message per direction;
+//   * the shuffle, which moves particles whose position left their cell into the right
+//     cell, migrating to the neighbouring rank when they left the core.
+// Cells are the global cell lattice of the Decomposition; within a cell, particles are
+// visited in global-ID order, so neighbour iteration order is the same on any processor
+// grid.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "engine/bonds.hpp"
+#include "engine/comm.hpp"
+#include "engine/decomposition.hpp"
+#include "engine/particles.hpp"
+
+namespace pdq {
+
+struct ExchangeStats {
+  std::uint64_t haloMessages = 0, haloBytes = 0;        // last halo exchange
+  std::uint64_t shuffleMessages = 0, shuffleBytes = 0;  // last shuffle (migrate + border)
+  std::uint64_t haloWallParticles = 0;                  // particles sent by the last halo
+};
+
+class ProcCube {
+ public:
+  ProcCube(const Decomposition& dec, Comm& comm, Particles& particles, Bonds& bonds,
+           bool binByCurrentPosition);
+
+  const Decomposition& decomposition() const { return dec_; }
+
+  // Keeps, from every particle of the problem, those in this core (thesis SetupProblem).
+  // gid/fixed/alter are global tables in the schema's widths.
+  void distribute(const std::vector<Gid>& gid, const std::vector<double>& fixed,
+                  const std::vector<double>& alter);
+  // Sorts owned particles by (cell, global ID), rebuilds the skin (border pass), the
+  // cell lists and the bonds' local partner indices.
+  void rebuild(long step);
+  // Shuffle (thesis §3.3.4): wraps periodic positions, migrates particles that left the
+  // core, then rebuild(). Call only for models whose particles change neighbours.
+  void shuffle(long step);
+  // Halo exchange of all alterable attributes (or of the listed columns only).
+  void halo();
+  void halo(const std::vector<int>& alterColumns);
+  // Bonds: map each bond's partner global ID to a local index (nearest copy if several).
+  void remapBonds(long step);
+
+  // Largest displacement of an owned particle since the last rebuild (this rank).
+  double maxDisplacementSinceRebuild() const;
+
+  // --- cells, for neighbour iteration ---
+  int cellOf(std::size_t i) const { return cell_[i]; }
+  int cellCount() const { return static_cast<int>(cellStart_.size()) - 1; }
+  // Visits every particle j (owned or ghost, j != i) in the cells around i's cell, in the
+  // canonical order: cells by (dz, dy, dx), particles in a cell by global ID.
+  template <class F>
+  void forEachNearby(std::size_t i, F&& f) const {
+    const int c = cell_[i];
+    for (int o : stencil_) {
+      const int cc = c + o;
+      for (std::uint32_t k = cellStart_[cc]; k < cellStart_[cc + 1]; ++k) {
+        const std::uint32_t j = cellList_[k];
+        if (j != i) f(j);
+      }
+    }
+  }
+
+  const ExchangeStats& stats() const { return stats_; }
+  std::uint64_t haloRecordBytes() const;
+
+ private:
+  struct Direction {
+    int axis, dir, dest, src;
+    bool wrapsOut;  // what I send crosses a periodic boundary (shift positions)
+    std::vector<std::uint32_t> send;
+    std::size_t recvFirst = 0, recvCount = 0;
+  };
+  int localCell(const std::array<int, 3>& globalCell) const;
+  std::array<int, 3> globalCellOfPosition(const double* pos) const;
+  void borderPass();
+  void buildCellLists();
+  void migrate(long step);
+  const double* binPosition(std::size_t i) const;
+
+  const Decomposition& dec_;
+  Comm& comm_;
+  Particles& p_;
+  Bonds& bonds_;
+  bool byCurrent_;
+  std::array<int, 3> ext_{}, skin_{};      // local cell extents (core + skin), skin width 0/1
+  std::vector<int> stencil_;               // linear offsets of the neighbour cells
+  std::vector<std::int32_t> cell_;         // local cell of each local particle
+  std::vector<std::array<int, 3>> gcell_;  // global cell of each local particle (unwrapped)
+  std::vector<std::uint32_t> cellStart_, cellList_;
+  std::vector<Direction> dirs_;
+  std::vector<double> rebuildPos_;  // owned positions at the last rebuild
+  std::vector<double> sendBuf_;
+  ExchangeStats stats_;
+};
+
+}  // namespace pdq

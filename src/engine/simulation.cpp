@@ -1,0 +1,255 @@
+#include "engine/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <limits>
+#include <map>
+
+#include "engine/atomic_file.hpp"
+#include "engine/error.hpp"
+
+namespace pdq {
+
+Simulation::Simulation(std::unique_ptr<Model> model, ParticleSet particles, RunConfig config,
+                       Comm& comm)
+    : model_(std::move(model)),
+      initial_(std::move(particles)),
+      cfg_(std::move(config)),
+      comm_(comm),
+      particles_(model_->schema()),
+      bonds_(model_->schema().nBond()) {}
+
+Simulation::~Simulation() = default;
+
+void Simulation::addOutput(std::unique_ptr<Output> out) { outputs_.push_back(std::move(out)); }
+
+Domain Simulation::makeDomain() const {
+  const Schema schema = model_->schema();
+  if (initial_.nFixed != schema.nFixed() || initial_.nAlter != schema.nAlter())
+    throw InputError(cfg_.source, 0, "particle tables do not match the model's attributes");
+  if (initial_.size() == 0) throw InputError(cfg_.source, 0, "the problem has no particles");
+  std::array<double, 3> mn, mx;
+  mn.fill(std::numeric_limits<double>::infinity());
+  mx.fill(-std::numeric_limits<double>::infinity());
+  for (std::size_t k = 0; k < initial_.size(); ++k)
+    for (int a = 0; a < 3; ++a) {
+      // Cells hold reference positions unless the model shuffles; take both into account
+      // so every particle starts inside the domain.
+      mn[a] = std::min({mn[a], initial_.fixedRow(k)[a], initial_.alterRow(k)[a]});
+      mx[a] = std::max({mx[a], initial_.fixedRow(k)[a], initial_.alterRow(k)[a]});
+    }
+  Domain d;
+  d.periodic = cfg_.periodic;
+  d.dim = cfg_.dim;
+  if (d.dim == 0)
+    d.dim = mx[2] > mn[2] || cfg_.periodic[2] ? 3 : (mx[1] > mn[1] || cfg_.periodic[1] ? 2 : 1);
+  const double margin = cfg_.margin >= 0 ? cfg_.margin : model_->horizon();
+  for (int a = 0; a < 3; ++a) {
+    if (a >= d.dim) {
+      d.periodic[a] = false;
+      d.lo[a] = mn[a] - 1;
+      d.hi[a] = mx[a] + 1;
+    } else if (d.periodic[a]) {
+      d.lo[a] = cfg_.boxLo[a];
+      d.hi[a] = cfg_.boxHi[a];
+      if (!(d.hi[a] > d.lo[a]))
+        throw InputError(cfg_.source, 0,
+                         std::string("periodic axis ") + "XYZ"[a] + " needs a box with hi > lo");
+    } else {
+      d.lo[a] = mn[a] - margin;
+      d.hi[a] = mx[a] + margin;
+      if (!(d.hi[a] > d.lo[a]))
+        throw InputError(
+            cfg_.source, 0,
+            std::string("the domain has no extent along ") + "XYZ"[a] + "; set a positive margin");
+    }
+  }
+  return d;
+}
+
+void Simulation::setup() {
+  if (setUp_) return;
+  Timers::Scope t(timers_, Phase::Setup);
+  const double horizon = model_->horizon();
+  const double minCell = cfg_.minCellSize > 0 ? cfg_.minCellSize : horizon;
+  if (!(horizon > 0)) throw InputError(cfg_.source, 0, "the model's horizon must be positive");
+  if (minCell < horizon) {
+    std::ostringstream os;
+    os << "minimum cell size " << minCell << " is below the model's horizon " << horizon
+       << "; neighbours would be missed";
+    throw InputError(cfg_.source, 0, os.str());
+  }
+  dec_ = std::make_unique<Decomposition>(makeDomain(), minCell, cfg_.procs, comm_.size(),
+                                         comm_.rank(), cfg_.source);
+  slack_ = (dec_->minActiveCellSize() - horizon) / 2;
+  cube_ = std::make_unique<ProcCube>(*dec_, comm_, particles_, bonds_, model_->shuffles());
+  cube_->distribute(initial_.gid, initial_.fixed, initial_.alter);
+  initial_ = ParticleSet{};  // the global tables are no longer needed
+  cube_->rebuild(cfg_.firstStep);
+  ctx_ = std::make_unique<Context>(particles_, bonds_, *cube_, comm_, debug_);
+  step_ = cfg_.firstStep;
+  ctx_->setStep(step_);
+  ctx_->setSteps(cfg_.steps);
+  model_->setup(*ctx_);
+  bonds_.finish(particles_.owned());
+  cube_->remapBonds(step_);
+  if (bondState_) {
+    const BondState& s = *bondState_;
+    const int nB = bonds_.nAttr();
+    std::map<std::pair<Gid, Gid>, std::size_t> where;
+    for (std::size_t k = 0; k < s.owner.size(); ++k) where[{s.owner[k], s.partner[k]}] = k;
+    for (std::size_t i = 0; i < particles_.owned(); ++i)
+      for (std::size_t b = bonds_.begin(i); b < bonds_.end(i); ++b) {
+        auto it = where.find({particles_.gid(i), bonds_.partnerGid(b)});
+        if (it == where.end()) {
+          std::ostringstream os;
+          os << "the restart has no state for the bond between particles " << particles_.gid(i)
+             << " and " << bonds_.partnerGid(b);
+          throw InputError(cfg_.source, 0, os.str());
+        }
+        std::copy_n(&s.attrs[it->second * nB], nB, bonds_.attr(b));
+      }
+    bondState_.reset();
+  }
+  model_->prepare(*ctx_);
+  cube_->halo();  // setup and prepare may have changed alterable attributes
+  if (!(ctx_->dt() > 0)) throw InputError(cfg_.source, 0, "the model set no positive time step");
+  debug_ << "rank " << comm_.rank() << ": core cells [" << dec_->coreLo(0) << "," << dec_->coreHi(0)
+         << ")x[" << dec_->coreLo(1) << "," << dec_->coreHi(1) << ")x[" << dec_->coreLo(2) << ","
+         << dec_->coreHi(2) << "), " << particles_.owned() << " owned, " << particles_.ghosts()
+         << " ghosts, " << bonds_.count() << " bonds\n";
+  std::filesystem::create_directories(cfg_.outDir);
+  setUp_ = true;
+  writeOutputs(false);
+}
+
+bool Simulation::advance() {
+  if (!setUp_) setup();
+  if (ended_ || step_ >= cfg_.steps) return false;
+  ++step_;
+  ctx_->setStep(step_);
+  {
+    Timers::Scope t(timers_, Phase::Force);
+    model_->force(*ctx_);
+  }
+  {
+    Timers::Scope t(timers_, Phase::Integrate);
+    model_->integrate(*ctx_);
+  }
+  if (model_->shuffles()) {
+    // Shuffle once some particle may have moved far enough to change neighbours, and at
+    // restart steps, so a restarted run starts from the same cells as the original.
+    const bool restartDue = cfg_.restartEvery > 0 && step_ % cfg_.restartEvery == 0;
+    const double moved = comm_.max(cube_->maxDisplacementSinceRebuild());
+    if (moved > slack_ || restartDue || step_ == cfg_.steps) {
+      Timers::Scope t(timers_, Phase::Shuffle);
+      cube_->shuffle(step_);
+      model_->neighboursChanged(*ctx_);
+      stats_.shuffles++;
+      stats_.maxShuffleMessages =
+          std::max(stats_.maxShuffleMessages, cube_->stats().shuffleMessages);
+    } else {
+      Timers::Scope t(timers_, Phase::Communication);
+      cube_->halo();
+    }
+  } else {
+    Timers::Scope t(timers_, Phase::Communication);
+    cube_->halo();
+  }
+  if (cube_->stats().haloMessages || !model_->shuffles()) {
+    stats_.haloMessages = cube_->stats().haloMessages;
+    stats_.haloBytes = cube_->stats().haloBytes;
+    stats_.haloWallParticles = cube_->stats().haloWallParticles;
+  }
+  if (cfg_.checkEvery > 0 && step_ % cfg_.checkEvery == 0) checkFinite();
+  const bool stop = !ctx_->stopReason().empty();
+  if (stop) {
+    ended_ = true;
+    debug_ << "stopped at step " << step_ << ": " << ctx_->stopReason() << "\n";
+  }
+  writeOutputs(stop || step_ == cfg_.steps);
+  return !ended_ && step_ < cfg_.steps;
+}
+
+void Simulation::run() {
+  setup();
+  while (advance()) {
+  }
+  finish();
+}
+
+void Simulation::checkFinite() {
+  double bad = -1;
+  const int nA = particles_.schema().nAlter();
+  for (std::size_t i = 0; i < particles_.owned() && bad < 0; ++i)
+    for (int k = 0; k < nA; ++k)
+      if (!std::isfinite(particles_.alter(i)[k])) {
+        bad = static_cast<double>(particles_.gid(i));
+        break;
+      }
+  bad = comm_.max(bad);
+  if (bad >= 0) {
+    std::ostringstream os;
+    os << "step " << step_ << ": particle " << static_cast<Gid>(bad)
+       << " has a non-finite attribute; the run is unstable (reduce the time step); the "
+          "last restart file written is the last good state";
+    throw RunError(os.str());
+  }
+}
+
+void Simulation::writeOutputs(bool last) {
+  Timers::Scope t(timers_, Phase::Output);
+  OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
+  for (auto& o : outputs_)
+    if (o->due(step_) || (last && o->atEnd())) o->write(oc);
+}
+
+void Simulation::finish() {
+  if (!setUp_) return;
+  {
+    Timers::Scope t(timers_, Phase::Output);
+    OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
+    for (auto& o : outputs_) o->finish(oc);
+  }
+  writeTiming();
+}
+
+void Simulation::writeTiming() {
+  std::ostringstream os;
+  os << "# pdq timing: wall-clock seconds per phase over " << comm_.size() << " rank(s), "
+     << step_ - cfg_.firstStep << " steps\n";
+  os << std::left << std::setw(16) << "# phase" << std::right << std::setw(14) << "min"
+     << std::setw(14) << "mean" << std::setw(14) << "max\n";
+  double total = 0;
+  for (int p = 0; p < static_cast<int>(Phase::Count); ++p) total += timers_[static_cast<Phase>(p)];
+  for (int p = 0; p <= static_cast<int>(Phase::Count); ++p) {
+    const bool isTotal = p == static_cast<int>(Phase::Count);
+    const double v = isTotal ? total : timers_[static_cast<Phase>(p)];
+    const double mn = comm_.min(v), mx = comm_.max(v);
+    ExactSum acc;
+    acc.add(v);
+    const double mean = comm_.sum(acc) / comm_.size();
+    os << std::left << std::setw(16) << (isTotal ? "total" : phaseName(static_cast<Phase>(p)))
+       << std::right << std::fixed << std::setprecision(6) << std::setw(14) << mn << std::setw(14)
+       << mean << std::setw(14) << mx << "\n";
+  }
+  os << "# halo per step on rank 0: " << stats_.haloMessages << " messages, " << stats_.haloBytes
+     << " bytes (" << stats_.haloWallParticles << " wall particles x " << cube_->haloRecordBytes()
+     << " bytes)\n";
+  if (stats_.shuffles)
+    os << "# shuffles: " << stats_.shuffles << ", at most " << stats_.maxShuffleMessages
+       << " messages each on rank 0\n";
+  // debug.txt: every rank's own lines, in rank order.
+  const std::string text = debug_.str();
+  auto blocks = comm_.gather(std::vector<char>(text.begin(), text.end()));
+  if (comm_.root()) {
+    writeFileAtomically(cfg_.outDir + "/timing.out", os.str());
+    std::string dbg;
+    for (auto& b : blocks) dbg.append(b.begin(), b.end());
+    writeFileAtomically(cfg_.outDir + "/debug.txt", dbg);
+  }
+}
+
+}  // namespace pdq

@@ -1,0 +1,103 @@
+#pragma once
+// The driver: builds the decomposition and procCube, lets the model set up, and runs the
+// time loop of thesis §3.3.2:
+//     force -> integrate -> exchange (halo) or shuffle -> outputs
+// with timers for every phase and a stop the model may request.
+#include <array>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "engine/bonds.hpp"
+#include "engine/comm.hpp"
+#include "engine/context.hpp"
+#include "engine/decomposition.hpp"
+#include "engine/model.hpp"
+#include "engine/output.hpp"
+#include "engine/particle_set.hpp"
+#include "engine/proccube.hpp"
+#include "engine/timers.hpp"
+
+namespace pdq {
+
+struct RunConfig {
+  std::array<int, 3> procs{0, 0, 0};  // processors per axis; 0 = automatic
+  double minCellSize = 0;             // 0 = the model's horizon
+  double margin = -1;                 // Δ around the particles' bounding box; <0 = horizon
+  std::array<bool, 3> periodic{false, false, false};
+  std::array<double, 3> boxLo{}, boxHi{};  // the box along periodic axes
+  int dim = 0;                             // 0 = from the particles (flat in Z -> 2D)
+  long steps = 0;
+  long firstStep = 0;  // a restarted run continues from here
+  std::string outDir = ".";
+  std::string source = "input";  // file named in configuration errors
+  long restartEvery = 0;         // ParticleAlterAttrs.<step>.rst every N steps (and at the end)
+  bool finalRestart = true;
+  long checkEvery = 100;  // scan for non-finite positions every N steps
+};
+
+// Bond attributes to restore after setup (a restart), keyed by (owner, partner) IDs.
+struct BondState {
+  std::vector<Gid> owner, partner;
+  std::vector<double> attrs;  // nBondAttr per bond
+};
+
+struct StepStats {
+  std::uint64_t haloMessages = 0, haloBytes = 0, haloWallParticles = 0;
+  std::uint64_t maxShuffleMessages = 0, shuffles = 0;
+};
+
+class Simulation {
+ public:
+  Simulation(std::unique_ptr<Model> model, ParticleSet particles, RunConfig config, Comm& comm);
+  ~Simulation();
+
+  void addOutput(std::unique_ptr<Output> out);
+  void restoreBonds(BondState state) { bondState_ = std::move(state); }
+
+  void setup();    // decomposition, distribution, model setup; called by run() if needed
+  void run();      // all steps
+  bool advance();  // one step; false when the run has ended (steps done or stop requested)
+  void finish();   // final outputs and timing.out
+
+  Model& model() { return *model_; }
+  Context& context() { return *ctx_; }
+  Particles& particles() { return particles_; }
+  Bonds& bonds() { return bonds_; }
+  const Decomposition& decomposition() const { return *dec_; }
+  ProcCube& procCube() { return *cube_; }
+  Comm& comm() { return comm_; }
+  Timers& timers() { return timers_; }
+  const StepStats& stats() const { return stats_; }
+  const RunConfig& config() const { return cfg_; }
+  long step() const { return step_; }
+  std::string debugText() const { return debug_.str(); }
+
+ private:
+  Domain makeDomain() const;
+  void writeOutputs(bool last);
+  void checkFinite();
+  void writeTiming();
+
+  std::unique_ptr<Model> model_;
+  ParticleSet initial_;
+  RunConfig cfg_;
+  Comm& comm_;
+  Particles particles_;
+  Bonds bonds_;
+  std::unique_ptr<Decomposition> dec_;
+  std::unique_ptr<ProcCube> cube_;
+  std::ostringstream debug_;
+  std::unique_ptr<Context> ctx_;
+  std::vector<std::unique_ptr<Output>> outputs_;
+  std::optional<BondState> bondState_;
+  Timers timers_;
+  StepStats stats_;
+  long step_ = 0;
+  double slack_ = 0;
+  bool setUp_ = false, ended_ = false, lastWritten_ = false;
+};
+
+}  // namespace pdq

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages pdq needs, only those that are missing.
+# Usage: tools/install-deps.sh [build|test|viz]   (test adds the peers; viz adds ParaView)
+set -euo pipefail
+need=(cmake g++ make pkg-config libopenmpi-dev openmpi-bin libcli11-dev libtomlplusplus-dev
+      libfmt-dev libeigen3-dev libgtest-dev libbenchmark-dev libcairo2-dev)
+case "${1:-build}" in
+  test) need+=(lammps) ;;
+  viz) need+=(lammps paraview python3-paraview) ;;
+esac
+missing=()
+for p in "${need[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+if [ "$(id -u)" -ne 0 ]; then
+  echo "pdq needs these Debian packages: ${missing[*]}" >&2
+  echo "install them as root: apt-get install ${missing[*]}" >&2
+  exit 1
+fi
+echo "installing: ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
