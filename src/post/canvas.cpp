@@ -25,7 +25,8 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
 Canvas::Canvas(std::string path, int width, int height)
     : path_(std::move(path)), width_(width), height_(height) {
   std::string ext = std::filesystem::path(path_).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   if (ext == ".png") {
     kind_ = Png;
     surface_ = cairo_image_surface_create(CAIRO_FORMAT_ARGB32, width, height);

@@ -19,8 +19,8 @@ Rgb ramp(const std::array<Rgb, N>& stops, double t) {
   return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b)};
 }
 
-constexpr std::array<Rgb, 4> kDamage{{{1.0, 0.92, 0.0}, {1.0, 0.55, 0.0}, {0.85, 0.0, 0.0},
-                                      {0.0, 0.0, 0.0}}};
+constexpr std::array<Rgb, 4> kDamage{
+    {{1.0, 0.92, 0.0}, {1.0, 0.55, 0.0}, {0.85, 0.0, 0.0}, {0.0, 0.0, 0.0}}};
 // Samples of the viridis colour map at 0, 1/6, ..., 1.
 constexpr std::array<Rgb, 7> kViridis{{{0.267, 0.005, 0.329},
                                        {0.267, 0.224, 0.514},

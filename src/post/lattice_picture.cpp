@@ -98,7 +98,7 @@ double LatticeFrame::depth(const double* p) const { return dot(Vec{p[0], p[1], p
 
 std::array<double, 3> parseView(const std::string& text) {
   static const std::vector<std::pair<std::string, Vec>> named{
-      {"x", {1, 0, 0}},  {"y", {0, 1, 0}},  {"z", {0, 0, 1}},
+      {"x", {1, 0, 0}},   {"y", {0, 1, 0}},   {"z", {0, 0, 1}},
       {"-x", {-1, 0, 0}}, {"-y", {0, -1, 0}}, {"-z", {0, 0, -1}}};
   for (const auto& [name, v] : named)
     if (text == name) return v;
@@ -109,8 +109,9 @@ std::array<double, 3> parseView(const std::string& text) {
   std::string rest;
   if (!(in >> v[0] >> v[1] >> v[2]) || (in >> rest) || dot(v, v) == 0)
     throw InputError("view", 0,
-                     "'" + text + "' is not a view direction (x, y, z, -x, -y, -z or three "
-                     "numbers such as 1,1,1)");
+                     "'" + text +
+                         "' is not a view direction (x, y, z, -x, -y, -z or three "
+                         "numbers such as 1,1,1)");
   return v;
 }
 
@@ -165,10 +166,11 @@ LatticeFrame latticeFrame(const LatticeImage& im, const PictureStyle& st) {
   const double legends = legendsOf(im) * legendWidth(font);
   const double areaW = std::max(st.width - 2 * margin - legends, 10.0);
   fr.width = st.width;
-  fr.height = st.height > 0 ? st.height
-                            : static_cast<int>(std::ceil(
-                                  top + margin + std::clamp(areaW * vSpan / uSpan, 0.15 * areaW,
-                                                            3.0 * areaW)));
+  fr.height =
+      st.height > 0
+          ? st.height
+          : static_cast<int>(std::ceil(
+                top + margin + std::clamp(areaW * vSpan / uSpan, 0.15 * areaW, 3.0 * areaW)));
   const double areaH = std::max(fr.height - top - margin, 10.0);
   fr.scale = std::min(areaW / uSpan, areaH / vSpan);
   // Centre the lattice in its area.
@@ -198,7 +200,8 @@ void renderLattice(const LatticeImage& im, const PictureStyle& st, const std::st
   Ticks vt = niceTicks(lo, hi, 5);
   if (!im.values.empty() && !(hi > lo)) lo = vt.lo, hi = vt.hi;
   if (!im.values.empty()) {  // keep only the ticks inside the bar
-    std::erase_if(vt.values, [&](double t) { return t < lo - 1e-9 * (hi - lo) || t > hi + 1e-9 * (hi - lo); });
+    std::erase_if(vt.values,
+                  [&](double t) { return t < lo - 1e-9 * (hi - lo) || t > hi + 1e-9 * (hi - lo); });
   }
 
   // Particles, far ones first.
@@ -219,8 +222,9 @@ void renderLattice(const LatticeImage& im, const PictureStyle& st, const std::st
   std::vector<std::size_t> shown;
   for (std::size_t b = 0; b < im.bonds.size(); ++b)
     if (im.bondDamage[b] > st.damageThreshold) shown.push_back(b);
-  std::stable_sort(shown.begin(), shown.end(),
-                   [&](std::size_t a, std::size_t b) { return im.bondDamage[a] < im.bondDamage[b]; });
+  std::stable_sort(shown.begin(), shown.end(), [&](std::size_t a, std::size_t b) {
+    return im.bondDamage[a] < im.bondDamage[b];
+  });
   cairo_set_line_width(cr, std::max(1.0, 0.8 * fr.dotRadius));
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   for (std::size_t b : shown) {
@@ -246,8 +250,9 @@ void renderLattice(const LatticeImage& im, const PictureStyle& st, const std::st
     x += legendWidth(font);
   }
   if (!im.values.empty()) {
-    colourBar(c, x, top, h, im.valueName, [](double t) { return valueColour(t); }, lo, hi, vt.values,
-              vt.step);
+    colourBar(
+        c, x, top, h, im.valueName, [](double t) { return valueColour(t); }, lo, hi, vt.values,
+        vt.step);
   }
   c.save();
 }

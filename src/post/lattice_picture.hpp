@@ -17,8 +17,8 @@
 namespace pdq::post {
 
 struct LatticeImage {
-  std::vector<double> position;      // reference positions, x y z per particle
-  std::vector<double> displacement;  // x y z per particle; empty: undeformed
+  std::vector<double> position;                   // reference positions, x y z per particle
+  std::vector<double> displacement;               // x y z per particle; empty: undeformed
   std::vector<std::array<std::size_t, 2>> bonds;  // particle indices of each bond's ends
   std::vector<double> bondDamage;                 // per bond, 0 (intact) .. 1 (broken)
   std::vector<double> values;  // per particle, to colour the dots by; empty: grey dots
@@ -28,12 +28,12 @@ struct LatticeImage {
 };
 
 struct PictureStyle {
-  double magnification = 1;              // displacements are drawn this many times larger
-  std::array<double, 3> view{0, 0, 1};   // direction from the lattice towards the viewer
-  int width = 1600;                      // pixels (PNG) or points (SVG, PDF)
-  int height = 0;                        // 0: from the lattice's aspect ratio
-  double dotRadius = 0;                  // pixels; 0: a fifth of the typical spacing
-  double damageThreshold = 0;            // bonds with damage at or below it are hidden
+  double magnification = 1;               // displacements are drawn this many times larger
+  std::array<double, 3> view{0, 0, 1};    // direction from the lattice towards the viewer
+  int width = 1600;                       // pixels (PNG) or points (SVG, PDF)
+  int height = 0;                         // 0: from the lattice's aspect ratio
+  double dotRadius = 0;                   // pixels; 0: a fifth of the typical spacing
+  double damageThreshold = 0;             // bonds with damage at or below it are hidden
   double valueMin = NAN, valueMax = NAN;  // colour bar range; NaN: the values' range
   std::string title;
 };
@@ -42,7 +42,7 @@ struct PictureStyle {
 struct LatticeFrame {
   int width = 0, height = 0;
   std::array<double, 3> right{}, up{}, toViewer{};
-  double scale = 1;      // pixels per length unit
+  double scale = 1;       // pixels per length unit
   double x0 = 0, y0 = 0;  // pixel of the world origin's projection
   double dotRadius = 1;   // pixels
   std::array<double, 2> pixel(const double* p) const;

@@ -12,7 +12,9 @@
 namespace pdq::post {
 namespace {
 
-double fontFor(const PlotStyle& st) { return std::clamp(std::min(st.width, st.height) / 45.0, 11.0, 28.0); }
+double fontFor(const PlotStyle& st) {
+  return std::clamp(std::min(st.width, st.height) / 45.0, 11.0, 28.0);
+}
 
 }  // namespace
 
@@ -25,8 +27,9 @@ PlotFrame plotFrame(const std::vector<Series>& series, const PlotStyle& st) {
   double xl = INFINITY, xh = -INFINITY, yl = INFINITY, yh = -INFINITY;
   for (const Series& s : series) {
     if (s.x.size() != s.y.size())
-      throw InputError("plot", 0, "series '" + s.name + "' has " + std::to_string(s.x.size()) +
-                                      " x values but " + std::to_string(s.y.size()) + " y values");
+      throw InputError("plot", 0,
+                       "series '" + s.name + "' has " + std::to_string(s.x.size()) +
+                           " x values but " + std::to_string(s.y.size()) + " y values");
     for (std::size_t k = 0; k < s.x.size(); ++k)
       if (std::isfinite(s.x[k]) && std::isfinite(s.y[k])) {
         xl = std::min(xl, s.x[k]), xh = std::max(xh, s.x[k]);
@@ -85,8 +88,10 @@ void plotLines(const std::vector<Series>& series, const PlotStyle& st, const std
   cairo_rectangle(cr, std::round(f.left) + 0.5, std::round(f.top) + 0.5,
                   std::round(f.right - f.left), std::round(f.bottom - f.top));
   cairo_stroke(cr);
-  if (!st.xLabel.empty()) c.text(0.5 * (f.left + f.right), st.height - 0.6 * font, st.xLabel, 0.5, 1, font);
-  if (!st.yLabel.empty()) c.text(0.6 * font, 0.5 * (f.top + f.bottom), st.yLabel, 0.5, 0, font, M_PI / 2);
+  if (!st.xLabel.empty())
+    c.text(0.5 * (f.left + f.right), st.height - 0.6 * font, st.xLabel, 0.5, 1, font);
+  if (!st.yLabel.empty())
+    c.text(0.6 * font, 0.5 * (f.top + f.bottom), st.yLabel, 0.5, 0, font, M_PI / 2);
   if (!st.title.empty()) c.text(0.5 * st.width, 1.6 * font, st.title, 0.5, 0.5, 1.2 * font);
 
   // The series, clipped to the plot area.

@@ -11,7 +11,7 @@
 namespace pdq::post {
 
 struct Series {
-  std::string name;       // the legend's entry
+  std::string name;          // the legend's entry
   std::vector<double> x, y;  // equal lengths; a non-finite value breaks the line
 };
 

@@ -24,7 +24,8 @@ class Png {
   // The colour at pixel (x, y), rounded to the pixel grid; channels in [0, 1].
   post::Rgb at(double x, double y) const {
     const int px = static_cast<int>(std::floor(x)), py = static_cast<int>(std::floor(y));
-    const unsigned char* d = cairo_image_surface_get_data(s_) + py * cairo_image_surface_get_stride(s_);
+    const unsigned char* d =
+        cairo_image_surface_get_data(s_) + py * cairo_image_surface_get_stride(s_);
     std::uint32_t v;
     std::memcpy(&v, d + 4 * px, 4);  // ARGB32 in native order; opaque pictures
     return {((v >> 16) & 255) / 255.0, ((v >> 8) & 255) / 255.0, (v & 255) / 255.0};

@@ -32,7 +32,7 @@ inline std::unique_ptr<Simulation> springLattice(Comm& comm, int nx, int ny, lon
     for (int i = 0; i < nx; ++i) {
       const std::size_t k = ps.add(j * nx + i, i, j, 0);
       ps.alterRow(k)[3] = 0.05 * (i - 0.5 * (nx - 1)) * (2 * j >= ny ? 1.0 : 0.1);  // vx
-      ps.alterRow(k)[4] = 0.05 * (j - 0.5 * (ny - 1));                              // vy
+      ps.alterRow(k)[4] = 0.005 * (j - 0.5 * (ny - 1));                             // vy
     }
   RunConfig cfg;
   cfg.steps = steps;
