@@ -17,7 +17,7 @@
 namespace pdq::test {
 
 inline std::unique_ptr<Simulation> springLattice(Comm& comm, int nx, int ny, long steps,
-                                                 const std::string& outDir) {
+                                                 const std::string& outDir, long firstStep = 0) {
   Params p("test");
   p.set("critical_stretch", "0.02");
   p.set("dt", "0.05");
@@ -36,6 +36,7 @@ inline std::unique_ptr<Simulation> springLattice(Comm& comm, int nx, int ny, lon
     }
   RunConfig cfg;
   cfg.steps = steps;
+  cfg.firstStep = firstStep;
   cfg.outDir = outDir;
   cfg.finalRestart = false;
   return std::make_unique<Simulation>(std::move(model), std::move(ps), cfg, comm);

@@ -42,8 +42,10 @@ TEST(Vtu, ParaViewReadsParticlesAndBonds) {
   if (!comm.root()) return;
 
   // Particles: steps 0, 8, 16 and the last (20), at times step * dt.
-  std::istringstream out(pvpython(dir + "/particles.pvd vx", dir + "/read.txt"));
-  std::string word;
+  std::istringstream out(pvpython(dir + "/particles.pvd vx " + dir + "/particles_bonds.pvd broken",
+                                  dir + "/read.txt"));
+  std::string word, line;
+  std::getline(out, line);  // series
   out >> word;
   ASSERT_EQ(word, "times");
   for (double t : {0.0, 0.4, 0.8, 1.0}) {
@@ -58,23 +60,50 @@ TEST(Vtu, ParaViewReadsParticlesAndBonds) {
   std::map<long, double> seen;
   long id;
   double v;
-  while (out >> word >> id >> v) seen[id] = v;
+  while (out >> word && word == "value" && out >> id >> v) seen[id] = v;
   ASSERT_EQ(seen.size(), vx.size());
   for (const auto& [gid, value] : vx) EXPECT_EQ(seen.at(gid), value) << "particle " << gid;
 
   // Bonds: each once, with its 'broken' flag; some broke and some did not.
-  std::istringstream bout(pvpython(dir + "/particles_bonds.pvd broken cell", dir + "/bonds.txt"));
-  std::getline(bout, word);
-  bout >> word >> points >> word >> cells;
+  ASSERT_EQ(word, "series");
+  std::getline(out, line);
+  std::getline(out, line);  // times
+  out >> word >> points >> word >> cells;
   EXPECT_EQ(cells, static_cast<long>(bonds.size()));
   std::map<std::pair<long, long>, double> seenBonds;
   long a, b;
-  while (bout >> word >> a >> b >> v) seenBonds[{a, b}] = v;
+  while (out >> word >> a >> b >> v) seenBonds[{a, b}] = v;
   EXPECT_EQ(seenBonds, bonds);
   int broken = 0;
   for (const auto& [k, flag] : bonds) broken += flag != 0;
   EXPECT_GT(broken, 0);
   EXPECT_LT(broken, static_cast<int>(bonds.size()));
+}
+
+// A restarted run (first step 8) continues the earlier run's series: the entries before
+// its first step are kept, the rest replaced, none doubled.
+TEST(Vtu, RestartContinuesTheSeries) {
+  Comm comm(MPI_COMM_WORLD);
+  const std::string dir = "vtu_restart_np" + std::to_string(comm.size());
+  if (comm.root()) std::filesystem::remove_all(dir);
+  comm.barrier();
+  auto first = test::springLattice(comm, 6, 4, 12, dir);
+  first->addOutput(std::make_unique<VtuOutput>(VtuOptions{.every = 8, .bonds = false}));
+  first->run();  // steps 0, 8, 12
+  auto again = test::springLattice(comm, 6, 4, 20, dir, 8);
+  again->addOutput(std::make_unique<VtuOutput>(VtuOptions{.every = 8, .bonds = false}));
+  again->run();  // steps 8, 16, 20
+  if (!comm.root()) return;
+  std::ifstream in(dir + "/particles.pvd");
+  std::string line, files;
+  while (std::getline(in, line)) {
+    const auto at = line.find("file=\"");
+    if (at != std::string::npos)
+      files += line.substr(at + 6, line.find('"', at + 6) - at - 6) + " ";
+  }
+  EXPECT_EQ(files,
+            "particles/particles_000000.pvtu particles/particles_000008.pvtu "
+            "particles/particles_000016.pvtu particles/particles_000020.pvtu ");
 }
 
 }  // namespace
