@@ -45,22 +45,29 @@ std::string escape(const std::string& s) {
   return out;
 }
 
-// Collects the appended block: each array is a UInt64 byte count then its raw bytes;
-// `offset` is where the array's count starts, relative to the block's first byte.
+// The appended block: each array is a UInt64 byte count then its raw bytes; an array's
+// `offset` is where its count starts, relative to the block's first byte. Offsets are
+// laid out first so the arrays then stream straight from memory to the file.
 class Appended {
  public:
   template <class T>
   std::uint64_t add(const std::vector<T>& v) {
-    const std::uint64_t offset = data_.size();
-    const std::uint64_t bytes = v.size() * sizeof(T);
-    data_.append(reinterpret_cast<const char*>(&bytes), sizeof bytes);
-    if (bytes) data_.append(reinterpret_cast<const char*>(v.data()), bytes);
+    const std::uint64_t offset = size_;
+    parts_.push_back({reinterpret_cast<const char*>(v.data()), v.size() * sizeof(T)});
+    size_ += sizeof(std::uint64_t) + parts_.back().second;
     return offset;
   }
-  const std::string& data() const { return data_; }
+  void write(std::ostream& os) const {
+    for (const auto& [data, bytes] : parts_) {
+      const std::uint64_t n = bytes;
+      os.write(reinterpret_cast<const char*>(&n), sizeof n);
+      if (n) os.write(data, static_cast<std::streamsize>(n));
+    }
+  }
 
  private:
-  std::string data_;
+  std::vector<std::pair<const char*, std::size_t>> parts_;
+  std::uint64_t size_ = 0;
 };
 
 void arrayTag(std::ostream& os, const char* indent, const char* type, const std::string& name,
@@ -86,7 +93,7 @@ void Piece::addCell(CellType t, std::initializer_list<std::int64_t> nodes) {
   types.push_back(t);
 }
 
-std::string encodePiece(const Piece& p) {
+void writePiece(std::ostream& out, const Piece& p) {
   Appended block;
   std::ostringstream os;
   os << header("UnstructuredGrid") << "  <UnstructuredGrid>\n"
@@ -104,10 +111,9 @@ std::string encodePiece(const Piece& p) {
   arrayTag(os, "        ", "UInt8", "types", 1, block.add(p.types));
   os << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
      << "  <AppendedData encoding=\"raw\">\n   _";
-  std::string out = os.str();
-  out += block.data();
-  out += "\n  </AppendedData>\n</VTKFile>\n";
-  return out;
+  out << os.str();
+  block.write(out);
+  out << "\n  </AppendedData>\n</VTKFile>\n";
 }
 
 std::string encodeParallel(const Piece& layout, const std::vector<std::string>& pieceFiles) {

@@ -2,8 +2,9 @@
 // VTK XML files for ParaView: unstructured-grid pieces (.vtu) with every array in one
 // appended raw binary block (no base64, no compression: the fastest to write and read,
 // and 8 bytes per double), the parallel header that names a step's pieces (.pvtu), and
-// the time-series collection (.pvd). Pure encoding: no MPI, no files.
+// the time-series collection (.pvd). Pure encoding: no MPI, no file names.
 #include <cstdint>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,7 +36,8 @@ struct Piece {
   void addCell(CellType t, std::initializer_list<std::int64_t> nodes);
 };
 
-std::string encodePiece(const Piece& piece);
+// Streams the piece (XML header, then the arrays' bytes straight from the vectors).
+void writePiece(std::ostream& out, const Piece& piece);
 // The .pvtu of one step: array layout taken from `layout`, pieces by relative file name.
 std::string encodeParallel(const Piece& layout, const std::vector<std::string>& pieceFiles);
 

@@ -136,7 +136,11 @@ void VtuOutput::writeStep(OutputContext& out, Series& series, const vtu::Piece& 
   if (!std::filesystem::is_directory(dir))
     throw Error("cannot create the ParaView output folder " + dir);
   const std::string pieceFile = stem + "_" + std::to_string(out.comm.rank()) + ".vtu";
-  writeFileAtomically(dir + "/" + pieceFile, vtu::encodePiece(piece));
+  {
+    AtomicFile f(dir + "/" + pieceFile);
+    vtu::writePiece(f.stream(), piece);
+    f.commit();
+  }
   // The step's header and the series name only complete pieces.
   out.comm.barrier();
   if (!out.comm.root()) return;
