@@ -118,6 +118,19 @@ vtu::Piece bondPiece(const Context& ctx) {
   return piece;
 }
 
+VtuOptions vtuOptions(const Params& t) {
+  VtuOptions o;
+  o.every = t.integer("every", o.every);
+  if (o.every < 0) {
+    const auto v = t.raw("every");
+    throw InputError(v->file, v->line, "every must be 0 or more steps");
+  }
+  o.atEnd = t.flag("at_end", o.atEnd);
+  o.bonds = t.flag("bonds", o.bonds);
+  o.name = t.text("name", o.name);
+  return o;
+}
+
 VtuOutput::VtuOutput(VtuOptions options) : Output(options.every), opt_(std::move(options)) {
   particles_.name = opt_.name;
   bonds_.name = opt_.name + "_bonds";

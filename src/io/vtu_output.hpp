@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/output.hpp"
+#include "engine/params.hpp"
 #include "io/vtu_format.hpp"
 
 namespace pdq {
@@ -22,6 +23,9 @@ struct VtuOptions {
   bool bonds = true;  // also the bond series
   std::string name = "particles";
 };
+
+// Options from a scenario's table (e.g. [output.paraview]): every, at_end, bonds, name.
+VtuOptions vtuOptions(const Params& table);
 
 class VtuOutput final : public Output {
  public:

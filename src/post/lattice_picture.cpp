@@ -96,7 +96,7 @@ std::array<double, 2> LatticeFrame::pixel(const double* p) const {
 
 double LatticeFrame::depth(const double* p) const { return dot(Vec{p[0], p[1], p[2]}, toViewer); }
 
-std::array<double, 3> parseView(const std::string& text) {
+std::array<double, 3> parseView(const std::string& text, const std::string& file, int line) {
   static const std::vector<std::pair<std::string, Vec>> named{
       {"x", {1, 0, 0}},   {"y", {0, 1, 0}},   {"z", {0, 0, 1}},
       {"-x", {-1, 0, 0}}, {"-y", {0, -1, 0}}, {"-z", {0, 0, -1}}};
@@ -108,7 +108,7 @@ std::array<double, 3> parseView(const std::string& text) {
   Vec v{};
   std::string rest;
   if (!(in >> v[0] >> v[1] >> v[2]) || (in >> rest) || dot(v, v) == 0)
-    throw InputError("view", 0,
+    throw InputError(file, line,
                      "'" + text +
                          "' is not a view direction (x, y, z, -x, -y, -z or three "
                          "numbers such as 1,1,1)");

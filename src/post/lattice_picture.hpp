@@ -56,7 +56,9 @@ LatticeFrame latticeFrame(const LatticeImage& image, const PictureStyle& style);
 // InputError for inconsistent array sizes or an unknown extension.
 void renderLattice(const LatticeImage& image, const PictureStyle& style, const std::string& path);
 
-// Parses a view direction: "x", "-y", "z" or three numbers "1,1,1" (towards the viewer).
-std::array<double, 3> parseView(const std::string& text);
+// Parses a view direction: "x", "-y", "z" or three numbers "1,1,1" (towards the viewer);
+// InputError naming `file` and `line` otherwise.
+std::array<double, 3> parseView(const std::string& text, const std::string& file = "view",
+                                int line = 0);
 
 }  // namespace pdq::post

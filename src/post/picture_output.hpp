@@ -5,6 +5,7 @@
 #include <string>
 
 #include "engine/output.hpp"
+#include "engine/params.hpp"
 #include "post/snapshot.hpp"
 
 namespace pdq::post {
@@ -16,6 +17,11 @@ struct PictureOptions {
   std::string format = "png";  // png, svg or pdf
   PictureRequest request;
 };
+
+// Options from a scenario's table (e.g. [output.picture]): every, at_end, name, format,
+// colour_by, bond_damage, magnification, view, width, height, dot_radius,
+// damage_threshold, value_min, value_max, title.
+PictureOptions pictureOptions(const Params& table);
 
 class PictureOutput final : public Output {
  public:

@@ -162,12 +162,12 @@ void checkRequest(const PictureRequest& r, const std::vector<std::string>& names
     std::vector<std::string> all = names;
     all.push_back("displacement");
     throw InputError(
-        "picture", 0,
+        r.source, r.colourByLine,
         "cannot colour by '" + r.colourBy + "': no such quantity" + suggestion(r.colourBy, all));
   }
   const std::string d = damageName(r, bondNames);
   if (!d.empty() && std::find(bondNames.begin(), bondNames.end(), d) == bondNames.end())
-    throw InputError("picture", 0,
+    throw InputError(r.source, r.bondDamageLine,
                      "no bond attribute '" + d + "' to draw as damage" + suggestion(d, bondNames));
 }
 

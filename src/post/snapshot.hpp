@@ -50,6 +50,9 @@ struct PictureRequest {
   // The bond attribute drawn as damage (0..1); empty: "damage" if there is one, else
   // no bonds; "none": no bonds.
   std::string bondDamage;
+  // Where the names were written, for errors.
+  std::string source = "picture";
+  int colourByLine = 0, bondDamageLine = 0;
 };
 
 // Throws InputError (suggesting the nearest name) when a requested name is unknown.

@@ -113,5 +113,36 @@ TEST(PictureOutput, UnknownNamesAreErrors) {
   EXPECT_THROW(post::PictureOutput{gif}, InputError);
 }
 
+TEST(PictureOutput, OptionsFromAScenarioTable) {
+  Params t("[output.picture]");
+  t.set("every", "500", "beam.toml", 12);
+  t.set("view", "1,-1,0.5", "beam.toml", 13);
+  t.set("colour_by", "damgae", "beam.toml", 14);
+  t.set("magnification", "50", "beam.toml", 15);
+  t.set("format", "svg", "beam.toml", 16);
+  const post::PictureOptions o = post::pictureOptions(t);
+  EXPECT_EQ(o.every, 500);
+  EXPECT_EQ(o.format, "svg");
+  EXPECT_EQ(o.request.style.magnification, 50);
+  EXPECT_EQ(o.request.style.view, (std::array<double, 3>{1, -1, 0.5}));
+  try {
+    post::checkRequest(o.request, {"damage"}, {});
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "beam.toml");
+    EXPECT_EQ(e.line(), 14);
+  }
+  t.set("view", "sideways", "beam.toml", 13);
+  try {
+    post::pictureOptions(t);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 13);
+  }
+  t.set("view", "z", "beam.toml", 13);
+  t.set("format", "gif", "beam.toml", 16);
+  EXPECT_THROW(post::pictureOptions(t), InputError);
+}
+
 }  // namespace
 }  // namespace pdq

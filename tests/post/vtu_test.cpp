@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "engine/error.hpp"
 #include "io/vtu_output.hpp"
 #include "spring_lattice.hpp"
 
@@ -104,6 +105,23 @@ TEST(Vtu, RestartContinuesTheSeries) {
   EXPECT_EQ(files,
             "particles/particles_000000.pvtu particles/particles_000008.pvtu "
             "particles/particles_000016.pvtu particles/particles_000020.pvtu ");
+}
+
+TEST(Vtu, OptionsFromAScenarioTable) {
+  Params t("[output.paraview]");
+  t.set("every", "100", "beam.toml", 20);
+  t.set("bonds", "false", "beam.toml", 21);
+  const VtuOptions o = vtuOptions(t);
+  EXPECT_EQ(o.every, 100);
+  EXPECT_FALSE(o.bonds);
+  EXPECT_TRUE(o.atEnd);
+  t.set("every", "-1", "beam.toml", 20);
+  try {
+    vtuOptions(t);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.line(), 20);
+  }
 }
 
 }  // namespace
