@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstring>
 #include <numeric>
-#include <unordered_map>
 
 #include "engine/error.hpp"
 #include "engine/model.hpp"
@@ -24,26 +23,6 @@ class Writer {
     put(&v, 1);
   }
   std::vector<char> bytes;
-};
-
-class Reader {
- public:
-  explicit Reader(const std::vector<char>& b) : b_(b) {}
-  template <class T>
-  void get(T* v, std::size_t n) {
-    std::memcpy(v, &b_[at_], n * sizeof(T));
-    at_ += n * sizeof(T);
-  }
-  template <class T>
-  T get() {
-    T v;
-    get(&v, 1);
-    return v;
-  }
-
- private:
-  const std::vector<char>& b_;
-  std::size_t at_ = 0;
 };
 
 std::string damageName(const PictureRequest& r, const std::vector<std::string>& bondNames) {
@@ -75,7 +54,14 @@ Snapshot gatherSnapshot(const Context& ctx, const Model& model, const Comm& comm
   for (std::size_t k = 0; k < fields.size(); ++k)
     model.field(ctx, static_cast<int>(k), std::span<double>(fieldValues[k]));
 
+  // Fixed-size records: a particle is its ID then 6 + nq doubles (X, x, quantities); a
+  // bond is its two IDs, the far end's position as this rank sees it, its attributes.
+  const std::size_t pRec = 8 * (7 + nq), bRec = 8 * (5 + nB);
+  std::uint64_t nb = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t b = B.begin(i); b < B.end(i); ++b) nb += B.partnerGid(b) > P.gid(i);
   Writer w;
+  w.bytes.reserve(16 + n * pRec + nb * bRec);
   w.put<std::uint64_t>(n);
   for (std::size_t i = 0; i < n; ++i) {
     w.put(P.gid(i));
@@ -85,16 +71,13 @@ Snapshot gatherSnapshot(const Context& ctx, const Model& model, const Comm& comm
     w.put(P.alter(i) + 3, S.nAlter() - 3);
     for (const auto& f : fieldValues) w.put(f[i]);
   }
-  std::uint64_t nb = 0;
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t b = B.begin(i); b < B.end(i); ++b) nb += B.partnerGid(b) > P.gid(i);
   w.put(nb);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
       if (B.partnerGid(b) < P.gid(i)) continue;
       w.put(P.gid(i));
       w.put(B.partnerGid(b));
-      w.put(P.alter(B.partner(b)), 3);  // where this rank sees the far end
+      w.put(P.alter(B.partner(b)), 3);
       w.put(B.attr(b), nB);
     }
   const auto blocks = comm.gather(w.bytes);
@@ -105,52 +88,54 @@ Snapshot gatherSnapshot(const Context& ctx, const Model& model, const Comm& comm
   if (!comm.root()) return s;
   s.names = names;
   s.bondNames = S.bond;
-  struct Row {
-    Gid id;
-    std::vector<double> v;  // X(3) x(3) quantities
-  };
-  std::vector<Row> rows;
-  struct BondRow {
-    Gid a, b;
-    double far[3];
-    std::vector<double> attrs;
-  };
-  std::vector<BondRow> bonds;
+  // The records are read in place, ordered through pointers.
+  std::vector<const char*> prt, bnd;
   for (const auto& block : blocks) {
-    Reader r(block);
-    const auto np = r.get<std::uint64_t>();
-    for (std::uint64_t k = 0; k < np; ++k) {
-      Row row{r.get<Gid>(), std::vector<double>(6 + nq)};
-      r.get(row.v.data(), row.v.size());
-      rows.push_back(std::move(row));
-    }
-    const auto nbk = r.get<std::uint64_t>();
-    for (std::uint64_t k = 0; k < nbk; ++k) {
-      BondRow br{r.get<Gid>(), r.get<Gid>(), {}, std::vector<double>(nB)};
-      r.get(br.far, 3);
-      r.get(br.attrs.data(), nB);
-      bonds.push_back(std::move(br));
-    }
+    const char* at = block.data();
+    auto count = [&] {
+      std::uint64_t c;
+      std::memcpy(&c, at, 8);
+      at += 8;
+      return c;
+    };
+    for (std::uint64_t k = count(); k > 0; --k, at += pRec) prt.push_back(at);
+    for (std::uint64_t k = count(); k > 0; --k, at += bRec) bnd.push_back(at);
   }
-  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.id < b.id; });
-  const std::size_t N = rows.size();
+  auto word = [](const char* rec, int k, auto v) {
+    std::memcpy(&v, rec + 8 * k, 8);
+    return v;
+  };
+  auto gid = [&](const char* rec, int k) { return word(rec, k, Gid{}); };
+  std::sort(prt.begin(), prt.end(),
+            [&](const char* a, const char* b) { return gid(a, 0) < gid(b, 0); });
+  const std::size_t N = prt.size();
+  s.id.resize(N);
+  s.reference.resize(3 * N);
+  s.current.resize(3 * N);
   s.values.assign(nq, std::vector<double>(N));
-  std::unordered_map<Gid, std::size_t> index;
   for (std::size_t i = 0; i < N; ++i) {
-    s.id.push_back(rows[i].id);
-    s.reference.insert(s.reference.end(), rows[i].v.begin(), rows[i].v.begin() + 3);
-    s.current.insert(s.current.end(), rows[i].v.begin() + 3, rows[i].v.begin() + 6);
-    for (int k = 0; k < nq; ++k) s.values[k][i] = rows[i].v[6 + k];
-    index[rows[i].id] = i;
+    s.id[i] = gid(prt[i], 0);
+    for (int d = 0; d < 3; ++d) {
+      s.reference[3 * i + d] = word(prt[i], 1 + d, 0.0);
+      s.current[3 * i + d] = word(prt[i], 4 + d, 0.0);
+    }
+    for (int k = 0; k < nq; ++k) s.values[k][i] = word(prt[i], 7 + k, 0.0);
   }
-  std::sort(bonds.begin(), bonds.end(), [](const BondRow& x, const BondRow& y) {
-    return std::pair(x.a, x.b) < std::pair(y.a, y.b);
+  std::sort(bnd.begin(), bnd.end(), [&](const char* a, const char* b) {
+    return std::pair(gid(a, 0), gid(a, 1)) < std::pair(gid(b, 0), gid(b, 1));
   });
-  for (const BondRow& br : bonds) {
-    const std::size_t a = index.at(br.a), b = index.at(br.b);
-    if (!std::equal(br.far, br.far + 3, &s.current[3 * b])) continue;  // a periodic image
+  auto index = [&](Gid g) {
+    return static_cast<std::size_t>(std::lower_bound(s.id.begin(), s.id.end(), g) - s.id.begin());
+  };
+  s.bonds.reserve(bnd.size());
+  s.bondAttrs.reserve(bnd.size() * nB);
+  for (const char* rec : bnd) {
+    const std::size_t a = index(gid(rec, 0)), b = index(gid(rec, 1));
+    bool image = false;  // the far end is a periodic image, not where the particle is
+    for (int d = 0; d < 3; ++d) image |= word(rec, 2 + d, 0.0) != s.current[3 * b + d];
+    if (image) continue;
     s.bonds.push_back({a, b});
-    s.bondAttrs.insert(s.bondAttrs.end(), br.attrs.begin(), br.attrs.end());
+    for (int k = 0; k < nB; ++k) s.bondAttrs.push_back(word(rec, 5 + k, 0.0));
   }
   return s;
 }
