@@ -140,6 +140,57 @@ Snapshot gatherSnapshot(const Context& ctx, const Model& model, const Comm& comm
   return s;
 }
 
+void sortParticles(Snapshot& s) {
+  const std::size_t n = s.particles();
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return s.id[a] < s.id[b]; });
+  auto permute = [&](auto& v, std::size_t width) {
+    auto old = v;
+    for (std::size_t i = 0; i < n; ++i) std::copy_n(&old[width * order[i]], width, &v[width * i]);
+  };
+  permute(s.id, 1);
+  permute(s.reference, 3);
+  permute(s.current, 3);
+  for (auto& v : s.values) permute(v, 1);
+}
+
+void addBonds(Snapshot& s, const std::vector<Gid>& owner, const std::vector<Gid>& partner,
+              const std::vector<double>& attrs, const std::string& source) {
+  const std::size_t nB = s.bondNames.size();
+  auto index = [&](Gid g) {
+    const auto it = std::lower_bound(s.id.begin(), s.id.end(), g);
+    if (it == s.id.end() || *it != g)
+      throw InputError(
+          source, 0,
+          "a bond names particle " + std::to_string(g) + ", which is not among the particles");
+    return static_cast<std::size_t>(it - s.id.begin());
+  };
+  std::vector<std::size_t> listed;  // bonds listed from their smaller ID's end
+  for (std::size_t k = 0; k < owner.size(); ++k) {
+    index(owner[k]);  // both ends must be particles
+    index(partner[k]);
+    if (owner[k] < partner[k]) listed.push_back(k);
+  }
+  // A bond listed only from its larger ID's end is kept from there.
+  std::vector<std::pair<Gid, Gid>> have;
+  for (std::size_t k : listed) have.emplace_back(owner[k], partner[k]);
+  std::sort(have.begin(), have.end());
+  for (std::size_t k = 0; k < owner.size(); ++k)
+    if (owner[k] > partner[k] &&
+        !std::binary_search(have.begin(), have.end(), std::pair(partner[k], owner[k])))
+      listed.push_back(k);
+  auto ends = [&](std::size_t k) { return std::minmax(owner[k], partner[k]); };
+  std::sort(listed.begin(), listed.end(),
+            [&](std::size_t a, std::size_t b) { return ends(a) < ends(b); });
+  for (std::size_t k : listed) {
+    const auto [a, b] = ends(k);
+    s.bonds.push_back({index(a), index(b)});
+    s.bondAttrs.insert(s.bondAttrs.end(), attrs.begin() + k * nB, attrs.begin() + (k + 1) * nB);
+  }
+}
+
 void checkRequest(const PictureRequest& r, const std::vector<std::string>& names,
                   const std::vector<std::string>& bondNames) {
   if (!r.colourBy.empty() && r.colourBy != "displacement" &&

@@ -41,6 +41,15 @@ std::vector<std::string> quantityNames(const Schema& schema, const Model& model)
 // across a periodic boundary (its far end a shifted image) is left out.
 Snapshot gatherSnapshot(const Context& ctx, const Model& model, const Comm& comm, long step);
 
+// For snapshots filled from files (`pdq post`): puts the particles in ID order (with
+// their quantities), then adds bonds named by their ends' global IDs, as restart files
+// store them (each bond may be listed from both ends): one copy per pair is kept, the
+// one listed by the smaller ID, in ID-pair order. `attrs` holds bondNames.size() values
+// per listed bond. InputError naming `source` for an ID that is not a particle.
+void sortParticles(Snapshot& s);
+void addBonds(Snapshot& s, const std::vector<Gid>& owner, const std::vector<Gid>& partner,
+              const std::vector<double>& attrs, const std::string& source);
+
 // What to draw from a snapshot.
 struct PictureRequest {
   PictureStyle style;

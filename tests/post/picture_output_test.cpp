@@ -61,6 +61,40 @@ TEST(PictureOutput, GathersAndDrawsDamage) {
   for (std::size_t b = 0; b < snap.bonds.size(); ++b)
     EXPECT_EQ(snap.bondAttrs[b], bonds.at({snap.id[snap.bonds[b][0]], snap.id[snap.bonds[b][1]]}));
 
+  // The same snapshot rebuilt as `pdq post` would from files: particles in another
+  // order, every bond listed from both ends.
+  post::Snapshot files;
+  files.names = snap.names;
+  files.bondNames = snap.bondNames;
+  files.values.resize(snap.names.size());
+  for (std::size_t r = snap.particles(); r-- > 0;) {
+    files.id.push_back(snap.id[r]);
+    files.reference.insert(files.reference.end(), &snap.reference[3 * r],
+                           &snap.reference[3 * r + 3]);
+    files.current.insert(files.current.end(), &snap.current[3 * r], &snap.current[3 * r + 3]);
+    for (std::size_t k = 0; k < snap.names.size(); ++k)
+      files.values[k].push_back(snap.values[k][r]);
+  }
+  post::sortParticles(files);
+  std::vector<Gid> owner, partner;
+  std::vector<double> attrs;
+  for (std::size_t b = snap.bonds.size(); b-- > 0;)
+    for (int side = 0; side < 2; ++side) {
+      owner.push_back(snap.id[snap.bonds[b][side]]);
+      partner.push_back(snap.id[snap.bonds[b][1 - side]]);
+      attrs.push_back(snap.bondAttrs[b]);
+    }
+  post::addBonds(files, owner, partner, attrs, "restart");
+  EXPECT_EQ(files.id, snap.id);
+  EXPECT_EQ(files.current, snap.current);
+  EXPECT_EQ(files.values, snap.values);
+  EXPECT_EQ(files.bonds, snap.bonds);
+  EXPECT_EQ(files.bondAttrs, snap.bondAttrs);
+  owner.push_back(nx * ny);  // not a particle
+  partner.push_back(0);
+  attrs.push_back(0);
+  EXPECT_THROW(post::addBonds(files, owner, partner, attrs, "restart"), InputError);
+
   // The last picture: broken bonds black at their midpoints; intact bonds between
   // particles with no broken bond not drawn (white between the dots).
   post::PictureRequest req = opt.request;
@@ -142,6 +176,18 @@ TEST(PictureOutput, OptionsFromAScenarioTable) {
   t.set("view", "z", "beam.toml", 13);
   t.set("format", "gif", "beam.toml", 16);
   EXPECT_THROW(post::pictureOptions(t), InputError);
+}
+
+TEST(PictureOutput, AddBondsKeepsOneCopyPerPair) {
+  post::Snapshot s;
+  s.id = {10, 11, 12};
+  s.reference = s.current = std::vector<double>(9, 0.0);
+  s.bondNames = {"damage"};
+  // 12-11 only from the larger end; 10-11 from both ends (values differ: the smaller
+  // ID's copy wins); 10-12 from the smaller end only.
+  post::addBonds(s, {12, 11, 10, 10}, {11, 10, 11, 12}, {0.3, 0.9, 0.1, 0.5}, "restart");
+  EXPECT_EQ(s.bonds, (std::vector<std::array<std::size_t, 2>>{{0, 1}, {0, 2}, {1, 2}}));
+  EXPECT_EQ(s.bondAttrs, (std::vector<double>{0.1, 0.5, 0.3}));
 }
 
 }  // namespace
