@@ -4,6 +4,7 @@
 // and 8 bytes per double), the parallel header that names a step's pieces (.pvtu), and
 // the time-series collection (.pvd). Pure encoding: no MPI, no file names.
 #include <cstdint>
+#include <initializer_list>
 #include <ostream>
 #include <string>
 #include <utility>
