@@ -45,11 +45,6 @@ std::vector<double> drawn(const LatticeImage& im, double magnification) {
   return p;
 }
 
-struct Layout {
-  double left, top, areaW, areaH;
-  int legends;
-};
-
 double legendWidth(double font) { return 7.5 * font; }
 
 int legendsOf(const LatticeImage& im) {
