@@ -22,7 +22,7 @@ cairo_status_t append(void* closure, const unsigned char* data, unsigned int len
 
 }  // namespace
 
-Canvas::Canvas(std::string path, int width, int height)
+Canvas::Canvas(std::string path, int width, int height, double fontSize)
     : path_(std::move(path)), width_(width), height_(height) {
   std::string ext = std::filesystem::path(path_).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -42,7 +42,7 @@ Canvas::Canvas(std::string path, int width, int height)
   cr_ = cairo_create(surface_);
   if (cairo_status(cr_) != CAIRO_STATUS_SUCCESS)
     throw Error("cannot draw " + path_ + ": " + cairo_status_to_string(cairo_status(cr_)));
-  font_ = std::clamp(std::min(width, height) / 45.0, 11.0, 28.0);
+  font_ = fontSize > 0 ? fontSize : std::clamp(std::min(width, height) / 45.0, 11.0, 28.0);
   cairo_select_font_face(cr_, "DejaVu Sans", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
   cairo_set_source_rgb(cr_, 1, 1, 1);  // white background, also in PNG
   cairo_paint(cr_);

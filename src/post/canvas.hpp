@@ -13,8 +13,9 @@ namespace pdq::post {
 
 class Canvas {
  public:
-  // Throws InputError for an extension other than .png, .svg or .pdf.
-  Canvas(std::string path, int width, int height);
+  // Throws InputError for an extension other than .png, .svg or .pdf. `fontSize` 0:
+  // from the picture's size.
+  Canvas(std::string path, int width, int height, double fontSize = 0);
   ~Canvas();
   Canvas(const Canvas&) = delete;
   Canvas& operator=(const Canvas&) = delete;

@@ -45,6 +45,9 @@ std::vector<double> drawn(const LatticeImage& im, double magnification) {
   return p;
 }
 
+// Text size from the picture's width (lattices are often much wider than tall).
+double fontFor(int width) { return std::clamp(width / 64.0, 11.0, 24.0); }
+
 double legendWidth(double font) { return 7.5 * font; }
 
 int legendsOf(const LatticeImage& im) {
@@ -155,7 +158,7 @@ LatticeFrame latticeFrame(const LatticeImage& im, const PictureStyle& st) {
   uLo -= spacing, uHi += spacing, vLo -= spacing, vHi += spacing;
   uSpan = uHi - uLo, vSpan = vHi - vLo;
 
-  const double font = std::clamp(st.width / 45.0, 11.0, 28.0);
+  const double font = fontFor(st.width);
   const double margin = 1.5 * font;
   const double top = st.title.empty() ? margin : 3 * font;
   const double legends = legendsOf(im) * legendWidth(font);
@@ -177,7 +180,7 @@ LatticeFrame latticeFrame(const LatticeImage& im, const PictureStyle& st) {
 
 void renderLattice(const LatticeImage& im, const PictureStyle& st, const std::string& path) {
   const LatticeFrame fr = latticeFrame(im, st);
-  Canvas c(path, fr.width, fr.height);
+  Canvas c(path, fr.width, fr.height, fontFor(fr.width));
   cairo_t* cr = c.cr();
   const double font = c.fontSize();
   const std::vector<double> p = drawn(im, st.magnification);
