@@ -16,6 +16,8 @@
 //   globals      potential, kinetic and total energy and temperature at the current
 //                step n, with the kinetic energy from v(n) = (v(n-1/2) + v(n+1/2)) / 2,
 //                which needs F(n): the globals evaluate the forces at x(n) once more.
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -23,6 +25,7 @@
 
 #include "engine/error.hpp"
 #include "engine/model.hpp"
+#include "models/lj/kernel.hpp"
 #include "models/lj/pair_lj.hpp"
 #include "models/lj/verlet_list.hpp"
 
@@ -52,21 +55,16 @@ class LennardJones final : public Model {
   double horizon() const override { return pair_.rc; }
   bool shuffles() const override { return true; }
 
-  void setup(Context& ctx) override { ctx.setDt(dt_); }
+  void setup(Context& ctx) override {
+    ctx.setDt(dt_);
+    scratch_.resize(omp_get_max_threads());
+  }
   void prepare(Context& ctx) override { buildLists(ctx); }
   void neighboursChanged(Context& ctx) override { buildLists(ctx); }
 
   void force(Context& ctx) override {
     checkListsValid(ctx);
-    switch (pair_.shift) {
-      case Shift::None:
-      case Shift::Energy:
-        evaluate<false, false>(ctx, nullptr);
-        break;
-      case Shift::Force:
-        evaluate<true, false>(ctx, nullptr);
-        break;
-    }
+    evaluate(ctx.particles, forces(ctx.particles), nullptr);
   }
 
   void integrate(Context& ctx) override {
@@ -86,17 +84,7 @@ class LennardJones final : public Model {
 
   std::vector<std::string> fields() const override { return {"potential_energy"}; }
   void field(const Context& ctx, int, std::span<double> out) const override {
-    const Particles& P = ctx.particles;
-    for (std::size_t i = 0; i < out.size(); ++i) {
-      const double* xi = P.alter(i);
-      double u = 0;
-      for (const std::uint32_t* k = lists_.begin(i); k != lists_.end(i); ++k) {
-        const double* xj = P.alter(*k);
-        const double r2 = sq(xi[X] - xj[X]) + sq(xi[Y] - xj[Y]) + sq(xi[Z] - xj[Z]);
-        if (r2 < pair_.rc2) u += pair_.energy(r2);
-      }
-      out[i] = 0.5 * u;
-    }
+    evaluate(ctx.particles, nullptr, out.data());
   }
 
   std::vector<std::string> globals() const override {
@@ -105,10 +93,7 @@ class LennardJones final : public Model {
   std::vector<double> globalValues(Context& ctx) override {
     Particles& P = ctx.particles;
     energy_.resize(P.owned());
-    if (pair_.shift == Shift::Force)
-      evaluate<true, true>(ctx, energy_.data());
-    else
-      evaluate<false, true>(ctx, energy_.data());
+    evaluate(P, forces(P), energy_.data());
     const double hm = ctx.dt() / mass_;
     const double pe = ctx.sumOwned([&](std::size_t i) { return energy_[i]; });
     const double ke = ctx.sumOwned([&](std::size_t i) {
@@ -130,40 +115,28 @@ class LennardJones final : public Model {
  private:
   static double sq(double v) { return v * v; }
 
-  // Forces F(n) at the current positions into the integ table; with Energy, also each
-  // owned particle's potential energy (half of its pair energies) into `energy`.
-  // The sum runs along the list in global-ID order, skipping pairs beyond rc.
-  template <bool ForceShift, bool Energy>
-  void evaluate(Context& ctx, double* energy) {
-    Particles& P = ctx.particles;
+  // Pair sums of every owned particle at the current positions: forces into `force`
+  // (rows of three: the integ table) unless null, and, unless `energy` is null, each
+  // particle's potential energy (half of its pair energies).
+  void evaluate(const Particles& P, double* force, double* energy) const {
     const long n = static_cast<long>(P.owned());
-    const double rc2 = pair_.rc2, f12 = pair_.f12, f6 = pair_.f6, fc = pair_.fc;
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      const double* xi = P.alter(i);
-      const double x = xi[X], y = xi[Y], z = xi[Z];
-      double fx = 0, fy = 0, fz = 0, u = 0;
-      for (const std::uint32_t* k = lists_.begin(i); k != lists_.end(i); ++k) {
-        const double* xj = P.alter(*k);
-        const double dx = x - xj[X], dy = y - xj[Y], dz = z - xj[Z];
-        const double r2 = dx * dx + dy * dy + dz * dz;
-        if (r2 >= rc2) continue;
-        const double ir2 = 1 / r2;
-        const double ir6 = ir2 * ir2 * ir2;
-        double fr = (f12 * ir6 - f6) * ir6 * ir2;
-        if constexpr (ForceShift) fr -= fc / std::sqrt(r2);
-        fx += fr * dx;
-        fy += fr * dy;
-        fz += fr * dz;
-        if constexpr (Energy) u += pair_.energy(r2);
-      }
-      double* F = P.integ(i);
-      F[FX] = fx;
-      F[FY] = fy;
-      F[FZ] = fz;
-      if constexpr (Energy) energy[i] = 0.5 * u;
+    if (n == 0) return;
+    // Positions packed four to a row (32 bytes, one cache line each), a denser copy of
+    // the alterable table for the kernel's scattered reads.
+    const long nLocal = static_cast<long>(P.local());
+    pos_.resize(4 * nLocal);
+#pragma omp parallel
+    {
+#pragma omp for schedule(static)
+      for (long j = 0; j < nLocal; ++j) std::copy_n(P.alter(j), 3, &pos_[4 * j]);
+      const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+      KernelScratch& scratch = scratch_[t];
+      scratch.reserve(lists_.longest());
+      pairSumsRange(pair_, pos_.data(), 4, lists_, n * t / nt, n * (t + 1) / nt, force, energy,
+                    scratch);
     }
   }
+  static double* forces(Particles& P) { return P.owned() ? P.integ(0) : nullptr; }
 
   // The list radius: the smallest cell edge of the engine's lattice, which divides each
   // active axis of the domain into whole cells no smaller than cutoff + skin (the run's
@@ -214,6 +187,8 @@ class LennardJones final : public Model {
   double mass_ = 1, skin_ = 0.3, dt_ = 0.005, radius_ = 0;
   VerletList lists_;
   std::vector<double> listPos_, energy_;
+  mutable std::vector<KernelScratch> scratch_;  // one per OpenMP thread
+  mutable std::vector<double> pos_;             // packed positions for the kernel
 };
 
 PDQ_REGISTER_MODEL(LennardJones, "lj",

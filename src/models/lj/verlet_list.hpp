@@ -19,12 +19,23 @@ class VerletList {
   const std::uint32_t* end(std::size_t i) const { return index_.data() + start_[i + 1]; }
   std::size_t size() const { return start_.empty() ? 0 : start_.size() - 1; }
   std::size_t entries() const { return index_.size(); }
+  std::size_t longest() const { return longest_; }
 
  private:
+  struct Scratch {                        // one per thread
+    std::vector<std::uint32_t> out;       // the lists of the thread's particles
+    std::vector<std::uint32_t> near;      // kept candidates of one particle
+    std::vector<std::uint32_t> key, who;  // (rank, particle in block) pairs of a block
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted;  // (local index, particle)
+    std::vector<std::uint32_t> count;                             // counting sort by rank
+    std::vector<std::size_t> cursor;
+  };
   std::vector<std::size_t> start_;
+  std::size_t longest_ = 0;
   std::vector<std::uint32_t> index_;
-  std::vector<std::uint32_t> rank_, byRank_;        // local index <-> position in global-ID order
-  std::vector<std::vector<std::uint32_t>> blocks_;  // per-thread lists during a build
+  std::vector<std::uint32_t> rank_, byRank_;  // local index <-> position in global-ID order
+  std::vector<double> xyz_;                   // packed positions during a build
+  std::vector<Scratch> threads_;
 };
 
 }  // namespace pdq::lj
