@@ -55,15 +55,15 @@ class LennardJones final : public Model {
   double horizon() const override { return pair_.rc; }
   bool shuffles() const override { return true; }
 
-  void setup(Context& ctx) override {
-    ctx.setDt(dt_);
-    scratch_.resize(omp_get_max_threads());
-  }
+  void setup(Context& ctx) override { ctx.setDt(dt_); }
   void prepare(Context& ctx) override { buildLists(ctx); }
-  void neighboursChanged(Context& ctx) override { buildLists(ctx); }
+  void neighboursChanged(Context& ctx) override {
+    checkNoBreach(ctx);
+    buildLists(ctx);
+  }
 
   void force(Context& ctx) override {
-    checkListsValid(ctx);
+    noteDisplacement(ctx);
     evaluate(ctx.particles, forces(ctx.particles), nullptr);
   }
 
@@ -125,6 +125,7 @@ class LennardJones final : public Model {
     // the alterable table for the kernel's scattered reads.
     const long nLocal = static_cast<long>(P.local());
     pos_.resize(4 * nLocal);
+    scratch_.resize(std::max<std::size_t>(scratch_.size(), omp_get_max_threads()));
 #pragma omp parallel
     {
 #pragma omp for schedule(static)
@@ -163,28 +164,34 @@ class LennardJones final : public Model {
 
   // The lists hold every pair within rc only while no particle moved further than
   // (radius - rc) / 2 since they were built; the engine shuffles before that happens when
-  // the run's minimum cell size is cutoff + skin. Anything else is a configuration error.
-  void checkListsValid(Context& ctx) const {
+  // the run's minimum cell size is cutoff + skin. Each step notes, without communicating,
+  // whether that held on this rank; the next shuffle (every run ends with one) turns a
+  // breach on any rank into an error, so a misconfigured run never ends quietly.
+  void noteDisplacement(const Context& ctx) {
     const Particles& P = ctx.particles;
+    const double limit = sq((radius_ - pair_.rc) / 2);
     double m = 0;
     for (std::size_t i = 0; i < P.owned(); ++i) {
       const double* x = P.alter(i);
       const double* x0 = &listPos_[3 * i];
       m = std::max(m, sq(x[X] - x0[0]) + sq(x[Y] - x0[1]) + sq(x[Z] - x0[2]));
     }
-    const double moved = ctx.max(std::sqrt(m));
-    if (moved > (radius_ - pair_.rc) / 2) {
-      std::ostringstream os;
-      os << "step " << ctx.step() << ": a particle moved " << moved
-         << " since the neighbour lists were built without the engine shuffling; the run's "
-            "minimum cell size must be cutoff + skin = "
-         << pair_.rc + skin_;
-      throw RunError(os.str());
-    }
+    if (m > limit && !(breach_ > 0)) breach_ = std::sqrt(m), breachStep_ = ctx.step();
+  }
+  void checkNoBreach(Context& ctx) {
+    if (!ctx.any(breach_ > 0)) return;
+    std::ostringstream os;
+    os << "the neighbour lists went stale: a particle moved further than (cell - cutoff) / 2 "
+          "without the engine shuffling";
+    if (breach_ > 0) os << " (" << breach_ << " by step " << breachStep_ << " on this rank)";
+    os << "; the run's minimum cell size must be cutoff + skin = " << pair_.rc + skin_;
+    throw RunError(os.str());
   }
 
   PairLJ pair_;
   double mass_ = 1, skin_ = 0.3, dt_ = 0.005, radius_ = 0;
+  double breach_ = 0;  // displacement that made the lists stale on this rank (0: none)
+  long breachStep_ = 0;
   VerletList lists_;
   std::vector<double> listPos_, energy_;
   mutable std::vector<KernelScratch> scratch_;  // one per OpenMP thread
