@@ -1,7 +1,7 @@
 // Energy conservation of a melting fcc crystal (T* = 1.44, density 0.8442, rc = 2.5):
 // with the energy-shifted potential the total energy stays within 1e-3 relative over
-// 1000 steps at dt = 0.005; with the force-shifted (smooth) cut-off the integrator's
-// second order shows: halving dt shrinks the energy error about fourfold.
+// 1000 steps at dt = 0.005 (read every 5 steps); with the force-shifted (smooth) cut-off the
+// integrator's second order shows: halving dt shrinks the energy error about fourfold.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,13 +20,15 @@ struct Drift {
   double pe0 = 0, pe = 0;       // potential energy at the start and the end
 };
 
-// Runs the melt, reading the total energy after every step.
-Drift run(const Melt& m, Comm& comm) {
+// Runs the melt, reading the total energy every `every` steps and at the end.
+Drift run(const Melt& m, long every, Comm& comm) {
   auto sim = makeMelt(m, comm);
   Drift d;
   d.e0 = global(*sim, "total");
   d.pe0 = global(*sim, "potential");
-  while (sim->advance()) d.maxError = std::max(d.maxError, std::fabs(global(*sim, "total") - d.e0));
+  while (sim->advance())
+    if (sim->step() % every == 0)
+      d.maxError = std::max(d.maxError, std::fabs(global(*sim, "total") - d.e0));
   d.maxError = std::max(d.maxError, std::fabs(global(*sim, "total") - d.e0));
   d.pe = global(*sim, "potential");
   return d;
@@ -38,7 +40,7 @@ TEST(LjMelt, EnergyShiftedKeepsTotalEnergyWithin1e3Over1000Steps) {
   m.shift = "energy";
   m.dt = 0.005;
   m.steps = 1000;
-  const Drift d = run(m, comm);
+  const Drift d = run(m, 5, comm);
   const double n = 4.0 * m.cells * m.cells * m.cells;
   EXPECT_LT(d.maxError / std::fabs(d.e0), 1e-3) << "E0 = " << d.e0;
   // The crystal really melted: half the kinetic energy went into potential energy.
@@ -52,20 +54,19 @@ TEST(LjMelt, ForceShiftedEnergyErrorShrinksFourfoldWhenDtHalves) {
   Comm comm(MPI_COMM_WORLD);
   Melt m;
   m.shift = "force";
-  const double time = 2.5;
+  const double time = 1.25;
   m.dt = 0.005;
   m.steps = std::lround(time / m.dt);
-  const Drift coarse = run(m, comm);
+  const Drift coarse = run(m, 5, comm);  // every 0.025 time units
   m.dt = 0.0025;
   m.steps = std::lround(time / m.dt);
-  const Drift fine = run(m, comm);
-  EXPECT_EQ(coarse.e0 == fine.e0, false);  // E0 depends on dt through v(0)
+  const Drift fine = run(m, 10, comm);
   const double ratio = coarse.maxError / fine.maxError;
   EXPECT_GT(ratio, 3.5);
   EXPECT_LT(ratio, 4.5);
   if (comm.root())
     std::printf(
-        "force-shifted, t = %.1f: max |E-E0| = %.3e (dt 0.005), %.3e (dt 0.0025), "
+        "force-shifted, t = %.2f: max |E-E0| = %.3e (dt 0.005), %.3e (dt 0.0025), "
         "ratio %.3f\n",
         time, coarse.maxError, fine.maxError, ratio);
 }

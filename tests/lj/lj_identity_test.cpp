@@ -88,8 +88,8 @@ std::vector<Outcome> round(const std::vector<Config>& runs) {
       MPI_Recv(sizes, 2, MPI_LONG, root, 1, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
       all[k].gid.resize(sizes[0]);
       all[k].values.resize(sizes[1]);
-      MPI_Recv(all[k].gid.data(), static_cast<int>(sizes[0]), MPI_INT64_T, root, 2,
-               MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+      MPI_Recv(all[k].gid.data(), static_cast<int>(sizes[0]), MPI_INT64_T, root, 2, MPI_COMM_WORLD,
+               MPI_STATUS_IGNORE);
       MPI_Recv(all[k].values.data(), static_cast<int>(sizes[1]), MPI_DOUBLE, root, 3,
                MPI_COMM_WORLD, MPI_STATUS_IGNORE);
     }
@@ -125,7 +125,8 @@ TEST(LjIdentity, SameBitsOnAnyRankCountGridAndThreadCount) {
     const auto& [run, o] = done[k];
     ASSERT_EQ(o.gid, ref.gid) << run.describe();
     ASSERT_EQ(o.values.size(), ref.values.size()) << run.describe();
-    EXPECT_EQ(0, std::memcmp(o.values.data(), ref.values.data(), ref.values.size() * sizeof(double)))
+    EXPECT_EQ(0,
+              std::memcmp(o.values.data(), ref.values.data(), ref.values.size() * sizeof(double)))
         << run.describe() << " differs from " << done.front().first.describe();
   }
   EXPECT_EQ(done.size(), size >= 4 ? 8u : size >= 2 ? 3u : 1u);
