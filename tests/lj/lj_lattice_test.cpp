@@ -60,6 +60,9 @@ TEST_P(LjLattice, PotentialEnergyPerAtomIsTheDirectLatticeSum) {
   const double a = std::cbrt(4 / m.density);
   const double expected = directLatticeSum(a, 1, 1, m.cutoff, m.shift);
   EXPECT_NEAR(perAtom, expected, 1e-10) << "shift " << m.shift;
+  if (comm.root())
+    std::printf("fcc 0.8442, rc 2.5, %s shift: %.12f per atom (direct sum %.12f)\n",
+                m.shift.c_str(), perAtom, expected);
   EXPECT_LT(maxForce(*sim), 1e-11);
   // At rest: the kinetic energy is that of the half-step velocities the zero (to
   // rounding) forces would give.
