@@ -24,6 +24,7 @@ struct Melt {
   double epsilon = 1, sigma = 1;
   long steps = 0;
   std::array<int, 3> procs{0, 0, 0};
+  double minCellSize = 0;  // 0: cutoff + skin, as the model requires
   std::uint64_t seed = 2026;
 };
 
@@ -60,7 +61,7 @@ inline std::unique_ptr<Simulation> makeMelt(const Melt& m, Comm& comm) {
   cfg.periodic = {true, true, true};
   cfg.boxLo = box.lo;
   cfg.boxHi = box.hi;
-  cfg.minCellSize = m.cutoff + m.skin;
+  cfg.minCellSize = m.minCellSize > 0 ? m.minCellSize : m.cutoff + m.skin;
   cfg.procs = m.procs;
   cfg.steps = m.steps;
   cfg.checkEvery = 0;
