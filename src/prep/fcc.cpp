@@ -1,0 +1,86 @@
+#include "prep/fcc.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "engine/error.hpp"
+
+namespace pdq {
+
+namespace {
+
+// Uniform in (0, 1]: 53 random bits, never 0 so the logarithm below is finite.
+double uniform(std::mt19937_64& rng) {
+  return (static_cast<double>(rng() >> 11) + 1.0) * 0x1.0p-53;
+}
+
+// Two independent standard normal numbers (Box-Muller).
+std::array<double, 2> normalPair(std::mt19937_64& rng) {
+  const double r = std::sqrt(-2.0 * std::log(uniform(rng)));
+  const double t = 2.0 * std::numbers::pi * uniform(rng);
+  return {r * std::cos(t), r * std::sin(t)};
+}
+
+}  // namespace
+
+FccBox makeFcc(const FccSpec& s, ParticleSet& out) {
+  const std::string where = "fcc lattice";
+  for (int a = 0; a < 3; ++a)
+    if (s.cells[a] < 1) throw InputError(where, 0, "the number of unit cells must be at least 1");
+  if (!(s.density > 0) || !std::isfinite(s.density))
+    throw InputError(where, 0, "the density must be a positive number");
+  if (!(s.temperature >= 0) || !std::isfinite(s.temperature))
+    throw InputError(where, 0, "the temperature must be zero or positive");
+  if (s.temperature > 0 && (s.velocityColumn < 3 || s.velocityColumn + 3 > out.nAlter))
+    throw InputError(where, 0, "a temperature needs the model's velocity attributes");
+  if (!(s.mass > 0)) throw InputError(where, 0, "the mass must be positive");
+
+  FccBox box;
+  const double a = std::cbrt(4.0 / s.density);
+  box.latticeConstant = a;
+  for (int k = 0; k < 3; ++k) {
+    box.lo[k] = s.origin[k];
+    box.hi[k] = s.origin[k] + s.cells[k] * a;
+  }
+  // The four basis sites of the cubic cell, in units of a; the quarter offset keeps every
+  // site strictly inside the box, away from the cell boundaries.
+  static constexpr double basis[4][3] = {
+      {0.25, 0.25, 0.25}, {0.75, 0.75, 0.25}, {0.75, 0.25, 0.75}, {0.25, 0.75, 0.75}};
+  const std::size_t first = out.size();
+  Gid id = s.firstId;
+  for (int k = 0; k < s.cells[2]; ++k)
+    for (int j = 0; j < s.cells[1]; ++j)
+      for (int i = 0; i < s.cells[0]; ++i)
+        for (const auto& b : basis)
+          out.add(id++, s.origin[0] + (i + b[0]) * a, s.origin[1] + (j + b[1]) * a,
+                  s.origin[2] + (k + b[2]) * a);
+  if (s.temperature == 0) return box;
+
+  const std::size_t n = out.size() - first;
+  std::mt19937_64 rng(s.seed);
+  std::vector<double> v(3 * n);
+  for (std::size_t k = 0; k < 3 * n; k += 2) {
+    const auto g = normalPair(rng);
+    v[k] = g[0];
+    if (k + 1 < 3 * n) v[k + 1] = g[1];
+  }
+  // Zero total momentum (all masses equal), then scale to the exact temperature.
+  for (int c = 0; c < 3; ++c) {
+    double mean = 0;
+    for (std::size_t p = 0; p < n; ++p) mean += v[3 * p + c];
+    mean /= static_cast<double>(n);
+    for (std::size_t p = 0; p < n; ++p) v[3 * p + c] -= mean;
+  }
+  double twoKe = 0;
+  for (double w : v) twoKe += s.mass * w * w;
+  const double dof = n > 1 ? 3.0 * static_cast<double>(n) - 3.0 : 3.0;
+  const double scale = twoKe > 0 ? std::sqrt(s.temperature * dof / twoKe) : 0.0;
+  for (std::size_t p = 0; p < n; ++p)
+    for (int c = 0; c < 3; ++c)
+      out.alterRow(first + p)[s.velocityColumn + c] = v[3 * p + c] * scale;
+  return box;
+}
+
+}  // namespace pdq
