@@ -119,31 +119,29 @@ class Lps final : public PeriModel {
     }
   }
 
-  // W_i = κ θ² / 2 + (B / 2 m_i) Σ_j ω (e - θ |ξ| / D)² V_j, summed over V_i W_i, with θ
-  // recomputed from the current positions.
-  double elasticEnergy(Context& ctx) const override {
+  // V_i W_i, W_i = κ θ² / 2 + (B / 2 m_i) Σ_j ω (e - θ |ξ| / D)² V_j, with θ recomputed
+  // from the current positions.
+  double particleEnergy(const Context& ctx, std::size_t i) const override {
     const Particles& P = ctx.particles;
     const Bonds& B = ctx.bonds;
     const double D = dim_;
-    return ctx.sumOwned([&](std::size_t i) {
-      const double* xi = P.alter(i);
-      std::vector<double> ext(B.end(i) - B.begin(i));
-      double th = 0;
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const double* xj = P.alter(B.partner(b));
-        const double* a = B.attr(b);
-        ext[b - B.begin(i)] = std::hypot(xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]) - a[XI];
-        th += a[WEIGHT] * a[XI] * ext[b - B.begin(i)];
-      }
-      th *= D * invM_[i];
-      double dev = 0;
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const double* a = B.attr(b);
-        const double ed = ext[b - B.begin(i)] - th * a[XI] / D;
-        dev += a[WEIGHT] * ed * ed;
-      }
-      return P.fixed(i)[VOLUME] * (0.5 * kappa_ * th * th + 0.5 * B_ * invM_[i] * dev);
-    });
+    const double* xi = P.alter(i);
+    std::vector<double> ext(B.end(i) - B.begin(i));
+    double th = 0;
+    for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+      const double* xj = P.alter(B.partner(b));
+      const double* a = B.attr(b);
+      ext[b - B.begin(i)] = std::hypot(xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]) - a[XI];
+      th += a[WEIGHT] * a[XI] * ext[b - B.begin(i)];
+    }
+    th *= D * invM_[i];
+    double dev = 0;
+    for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+      const double* a = B.attr(b);
+      const double ed = ext[b - B.begin(i)] - th * a[XI] / D;
+      dev += a[WEIGHT] * ed * ed;
+    }
+    return P.fixed(i)[VOLUME] * (0.5 * kappa_ * th * th + 0.5 * B_ * invM_[i] * dev);
   }
 
   bool constantInfluence_ = false;

@@ -39,6 +39,13 @@ void PeriModel::configure(const Params& p) {
   criticalStretch_ = p.number("critical_stretch", 0.0, 0.0, 1e300);
   damping_ = p.number("damping", 0.0, 0.0, 1e300);
   spacing_ = p.number("lattice_spacing", 0.0, 0.0, 1e300);
+  if (p.has("notch")) {
+    notch_ = p.numbers("notch");
+    if (notch_.empty() || notch_.size() % 4 != 0) {
+      const auto r = p.raw("notch");
+      throw InputError(r->file, r->line, "notch needs X1 Y1 X2 Y2 for each segment");
+    }
+  }
   configureModel(p);
 }
 
@@ -70,7 +77,7 @@ void PeriModel::setup(Context& ctx) {
     ctx.forEachNearby(i, [&](std::size_t j) {
       const double* Xj = P.fixed(j);
       const double dx = Xi[0] - Xj[0], dy = Xi[1] - Xj[1], dz = Xi[2] - Xj[2];
-      if (dx * dx + dy * dy + dz * dz <= d2max) ctx.bonds.add(i, P.gid(j));
+      if (dx * dx + dy * dy + dz * dz <= d2max && !cutByNotch(Xi, Xj)) ctx.bonds.add(i, P.gid(j));
     });
   }
   ctx.setDt(dt_);
@@ -93,6 +100,20 @@ void PeriModel::prepare(Context& ctx) {
     }
   }
   prepareBonds(ctx, volume);
+}
+
+bool PeriModel::cutByNotch(const double* a, const double* b) const {
+  // Proper crossing of segments ab and cd: each one's ends lie strictly on both sides of
+  // the other's line (a bond merely touching the notch line is kept).
+  auto side = [](const double* p, const double* q, const double* r) {
+    return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+  };
+  for (std::size_t k = 0; k + 3 < notch_.size(); k += 4) {
+    const double* c = &notch_[k];
+    const double* d = &notch_[k + 2];
+    if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0) return true;
+  }
+  return false;
 }
 
 std::vector<double> PeriModel::shareWithGhosts(Context& ctx, int column,
@@ -131,8 +152,13 @@ void PeriModel::integrate(Context& ctx) {
   }
 }
 
-void PeriModel::field(const Context& ctx, int, std::span<double> out) const {
+void PeriModel::field(const Context& ctx, int k, std::span<double> out) const {
   const Bonds& B = ctx.bonds;
+  if (k == 1) {
+    for (std::size_t i = 0; i < out.size(); ++i)
+      out[i] = particleEnergy(ctx, i) / ctx.particles.fixed(i)[VOLUME];
+    return;
+  }
   for (std::size_t i = 0; i < out.size(); ++i) {
     const std::size_t n = B.end(i) - B.begin(i);
     std::size_t broken = 0;
@@ -157,7 +183,8 @@ std::vector<double> PeriModel::globalValues(Context& ctx) {
       s += ctx.bonds.attr(b)[WEIGHT] == 0;
     return s;
   });
-  return {kinetic, elasticEnergy(ctx), broken / 2};
+  const double elastic = ctx.sumOwned([&](std::size_t i) { return particleEnergy(ctx, i); });
+  return {kinetic, elastic, broken / 2};
 }
 
 }  // namespace pdq::peri

@@ -12,6 +12,8 @@
 //   integ  ax ay az                           acceleration from the bonds
 //   bond   xi  weight  [model columns]        reference length |ξ|, and the bond's
 //                                             constant, 0 once the bond has broken
+// A pre-crack (`notch`, segments X1 Y1 X2 Y2 in the XY plane, through the thickness in
+// 3D) removes the bonds whose reference segment crosses it.
 #include <string>
 #include <vector>
 
@@ -33,7 +35,7 @@ class PeriModel : public Model {
   void prepare(Context& ctx) final;
   void integrate(Context& ctx) final;
 
-  std::vector<std::string> fields() const override { return {"damage"}; }
+  std::vector<std::string> fields() const override { return {"damage", "energy_density"}; }
   void field(const Context& ctx, int k, std::span<double> out) const override;
   std::vector<std::string> globals() const override;
   std::vector<double> globalValues(Context& ctx) override;
@@ -47,7 +49,10 @@ class PeriModel : public Model {
   // the bonds' state). XI is already set; `volume[b]` is the partner's volume times the
   // bond's partial-volume weight, 0 for a bond that a restart says is broken.
   virtual void prepareBonds(Context& ctx, const std::vector<double>& volume) = 0;
-  virtual double elasticEnergy(Context& ctx) const = 0;
+  // Elastic energy of owned particle i at the current positions (energy density × volume).
+  virtual double particleEnergy(const Context& ctx, std::size_t i) const = 0;
+  // True when the bond's reference segment crosses the notch (it is never created).
+  bool cutByNotch(const double* Xi, const double* Xj) const;
 
   // The value of an owned-particle quantity at every local particle (owned and ghosts):
   // it travels to the ghosts through alterable column `column`, whose owned values are
@@ -57,7 +62,8 @@ class PeriModel : public Model {
 
   double E_ = 0, nu_ = 0, delta_ = 0, thickness_ = 1, density_ = 0, dt_ = 0;
   double criticalStretch_ = 0, damping_ = 0, spacing_ = 0;
-  int dim_ = 3;  // from the particles, known in setup
+  std::vector<double> notch_;  // pre-cracks: X1 Y1 X2 Y2 per segment (in the XY plane)
+  int dim_ = 3;                // from the particles, known in setup
 };
 
 // Weight of a bond of reference length r0 in a horizon delta on a lattice of the given
