@@ -145,7 +145,9 @@ TEST(PdDeterminism, BreakingPmb3D) {
   for (auto& [id, row] : ref) broken += row.back();
   int me = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &me);
-  if (me == 0) EXPECT_GT(broken, 100) << "the block should tear";
+  if (me == 0) {
+    EXPECT_GT(broken, 100) << "the block should tear";
+  }
 }
 
 }  // namespace
