@@ -1,5 +1,6 @@
 // Peridynamics benchmark driver (run under mpirun):
-//   pd_bench cantilever M N MODEL [PX PY]   the thesis benchmark (§3.5): prints the
+//   pd_bench cantilever M N MODEL [PX PY [STEPS]]
+//                                           the thesis benchmark (§3.5): prints the
 //                                           monitored particle's final Y (16 digits),
 //                                           the time of the steps and the peak memory
 //   pd_bench block N MODEL STEPS [DIR [DT]] an N×N×N simple-cubic block, δ = 3 s, started
@@ -58,13 +59,15 @@ double attributeOf(Simulation& sim, Gid id, int column) {
 }
 
 int cantilever(int argc, char** argv, Comm& comm) {
-  if (argc < 5) throw InputError("pd_bench", 0, "usage: pd_bench cantilever M N MODEL [PX PY]");
+  if (argc < 5)
+    throw InputError("pd_bench", 0, "usage: pd_bench cantilever M N MODEL [PX PY [STEPS]]");
   prep::CantileverSpec spec;
   spec.m = std::stoi(argv[2]);
   spec.n = std::stoi(argv[3]);
   spec.model = argv[4];
   prep::CantileverProblem pb = prep::thesisCantilever(spec);
   if (argc >= 7) pb.run.procs = {std::stoi(argv[5]), std::stoi(argv[6]), 1};
+  if (argc >= 8) pb.run.steps = std::stol(argv[7]);
   pb.run.outDir = "pd_cantilever_out";
   const std::size_t nParticles = pb.particles.size();
   auto model = ModelRegistry::create(pb.model);

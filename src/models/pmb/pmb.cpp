@@ -2,12 +2,13 @@
 // pulls with force c s V_i V_j along it (s = stretch, c the micromodulus), and breaks for
 // good once its stretch exceeds the critical stretch. The bond constant kept per bond is
 // the partner's share of the acceleration per unit extension, c V_j w g / (ρ |ξ|) (w the
-// partial-volume weight, g the optional surface correction), so the kernel does one
-// square root, one division and six multiply-adds per bond.
+// partial-volume weight, g the optional surface correction), so the kernel (pmb_kernel.hpp)
+// does one square root, one division and a few multiply-adds per bond.
 #include <cmath>
 #include <numbers>
 
 #include "models/peri/peri_model.hpp"
+#include "models/pmb/pmb_kernel.hpp"
 
 namespace pdq::peri {
 namespace {
@@ -72,37 +73,12 @@ class Pmb final : public PeriModel {
       for (std::size_t i = 0; i < P.owned(); ++i) std::fill_n(P.integ(i), 3, 0.0);
       return;
     }
-    const std::int32_t* partner = B.partners().data();
-    double* attr = B.attr(0);
-    const int nB = B.nAttr();
-    const double* x = P.alter(0);
-    const std::size_t nA = P.schema().nAlter();
-    const double sc = criticalStretch_;
+    const PmbView view{B.partners().data(), B.attr(0), P.alter(0), std::size_t(P.schema().nAlter()),
+                       criticalStretch_};
+    const PmbKernel kernel = kernel_;
     const long n = static_cast<long>(P.owned());
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      const double* xi = x + i * nA;
-      const double xi0 = xi[0], xi1 = xi[1], xi2 = xi[2];
-      double a0 = 0, a1 = 0, a2 = 0;
-      const std::size_t end = B.end(i);
-      for (std::size_t b = B.begin(i); b < end; ++b) {
-        const double* xj = x + partner[b] * nA;
-        double* ab = attr + b * nB;
-        const double r0 = xj[0] - xi0, r1 = xj[1] - xi1, r2 = xj[2] - xi2;
-        const double len = std::sqrt(r0 * r0 + r1 * r1 + r2 * r2);
-        const double ext = len - ab[XI];
-        // Both ends judge a bond from the same numbers, so it breaks on both sides at once.
-        if (sc > 0 && ext > sc * ab[XI]) ab[WEIGHT] = 0;
-        const double t = ab[WEIGHT] * ext / len;
-        a0 += t * r0;
-        a1 += t * r1;
-        a2 += t * r2;
-      }
-      double* acc = P.integ(i);
-      acc[AX] = a0;
-      acc[AY] = a1;
-      acc[AZ] = a2;
-    }
+    for (long i = 0; i < n; ++i) kernel(view, i, B.begin(i), B.end(i), P.integ(i));
   }
 
   // Half the energy of its bonds, ½ c s² |ξ| V_i V_j w g each.
@@ -121,6 +97,7 @@ class Pmb final : public PeriModel {
   }
 
   bool surfaceCorrection_ = false;
+  PmbKernel kernel_ = pmbKernel();
   double c_ = 0;
 };
 
