@@ -7,6 +7,7 @@
 #include <random>
 #include <vector>
 
+#include "models/lps/lps_kernel.hpp"
 #include "models/pmb/pmb_kernel.hpp"
 
 namespace pdq::peri {
@@ -39,6 +40,44 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
       EXPECT_EQ(attr, attrB) << "the same bonds break";
       if (sc > 0) {
         for (std::size_t b = 0; b < nb; ++b) broken += attr[2 * b + 1] == 0;
+      }
+    }
+  }
+  EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
+}
+
+TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const std::size_t nA = 7, particles = 64;
+  std::vector<double> x(particles * nA);
+  for (auto& v : x) v = 3 * u(rng);
+  std::size_t broken = 0;
+  for (double sc : {0.0, 0.05}) {
+    for (std::size_t nb = 0; nb < 40; ++nb) {
+      std::vector<std::int32_t> partner(nb);
+      std::vector<double> attr(3 * nb);
+      for (std::size_t b = 0; b < nb; ++b) {
+        partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
+        const double* xj = &x[partner[b] * nA];
+        const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
+        attr[3 * b] = len * (1 + 0.1 * u(rng));
+        attr[3 * b + 1] = 1 + u(rng);
+        attr[3 * b + 2] = 2 + u(rng);
+      }
+      std::vector<double> attrB = attr;
+      const LpsView fastView{partner.data(), attr.data(), x.data(), nA, 6, 1.5, -0.7, sc};
+      const LpsView portableView{partner.data(), attrB.data(), x.data(), nA, 6, 1.5, -0.7, sc};
+      const double d1 = lpsKernels().dilatation(fastView, 0, 0, nb);
+      const double d2 = lpsKernelsPortable().dilatation(portableView, 0, 0, nb);
+      EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
+      double fast[3], portable[3];
+      lpsKernels().force(fastView, 0, 0, nb, 0.3, 0.8, fast);
+      lpsKernelsPortable().force(portableView, 0, 0, nb, 0.3, 0.8, portable);
+      EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
+      EXPECT_EQ(attr, attrB) << "the same bonds break";
+      if (sc > 0) {
+        for (std::size_t b = 0; b < nb; ++b) broken += attr[3 * b + 1] == 0;
       }
     }
   }

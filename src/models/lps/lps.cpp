@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "engine/error.hpp"
+#include "models/lps/lps_kernel.hpp"
 #include "models/peri/peri_model.hpp"
 
 namespace pdq::peri {
@@ -67,56 +68,25 @@ class Lps final : public PeriModel {
       for (long i = 0; i < n; ++i) std::fill_n(P.integ(i), 3, 0.0), P.alter(i)[THETA] = 0;
       return;
     }
-    const std::int32_t* partner = B.partners().data();
-    double* attr = B.attr(0);
-    const int nB = B.nAttr();
-    double* x = P.alter(0);
-    const std::size_t nA = P.schema().nAlter();
+    const LpsView view{B.partners().data(),
+                       B.attr(0),
+                       P.alter(0),
+                       std::size_t(P.schema().nAlter()),
+                       THETA,
+                       A_ / density_,
+                       B_ / density_,
+                       criticalStretch_};
+    const LpsKernels k = kernels_;
     const double D = dim_;
-
-    // Pass 1: dilatation of the owned particles.
+    // Pass 1: dilatation of the owned particles, then to the ghosts.
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      const double* xi = x + i * nA;
-      double th = 0;
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const double* xj = x + partner[b] * nA;
-        const double* ab = attr + b * nB;
-        const double r0 = xj[0] - xi[0], r1 = xj[1] - xi[1], r2 = xj[2] - xi[2];
-        const double len = std::sqrt(r0 * r0 + r1 * r1 + r2 * r2);
-        th += ab[WEIGHT] * ab[XI] * (len - ab[XI]);
-      }
-      x[i * nA + THETA] = D * invM_[i] * th;
-    }
+    for (long i = 0; i < n; ++i)
+      P.alter(i)[THETA] = D * invM_[i] * k.dilatation(view, i, B.begin(i), B.end(i));
     ctx.refreshGhosts({THETA});
-
-    // Pass 2: forces. rk is the bond's ρ-scaled pull, (t_ij + t_ji) V_j / ρ.
-    const double a = A_ / density_, bcoef = B_ / density_, sc = criticalStretch_;
+    // Pass 2: forces.
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      const double* xi = x + i * nA;
-      const double qi = xi[THETA] * invM_[i], invMi = invM_[i];
-      double a0 = 0, a1 = 0, a2 = 0;
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const double* xj = x + partner[b] * nA;
-        double* ab = attr + b * nB;
-        const double r0 = xj[0] - xi[0], r1 = xj[1] - xi[1], r2 = xj[2] - xi[2];
-        const double len = std::sqrt(r0 * r0 + r1 * r1 + r2 * r2);
-        const double ext = len - ab[XI];
-        // Both ends judge a bond from the same numbers, so it breaks on both sides at once.
-        if (sc > 0 && ext > sc * ab[XI]) ab[WEIGHT] = 0;
-        const double rk = ab[WEIGHT] * (a * ab[XI] * (qi + xj[THETA] * ab[INV_M]) +
-                                        bcoef * (invMi + ab[INV_M]) * ext);
-        const double t = rk / len;
-        a0 += t * r0;
-        a1 += t * r1;
-        a2 += t * r2;
-      }
-      double* acc = P.integ(i);
-      acc[AX] = a0;
-      acc[AY] = a1;
-      acc[AZ] = a2;
-    }
+    for (long i = 0; i < n; ++i)
+      k.force(view, i, B.begin(i), B.end(i), P.alter(i)[THETA] * invM_[i], invM_[i], P.integ(i));
   }
 
   // V_i W_i, W_i = κ θ² / 2 + (B / 2 m_i) Σ_j ω (e - θ |ξ| / D)² V_j, with θ recomputed
@@ -145,6 +115,7 @@ class Lps final : public PeriModel {
   }
 
   bool constantInfluence_ = false;
+  LpsKernels kernels_ = lpsKernels();
   double kappa_ = 0, A_ = 0, B_ = 0;
   std::vector<double> invM_;  // 1 / m of the owned particles (they never move between ranks)
 };
