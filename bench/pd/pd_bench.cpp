@@ -84,7 +84,7 @@ int cantilever(int argc, char** argv, Comm& comm) {
   if (comm.root())
     std::printf(
         "%s m=%d n=%d particles=%zu bonds=%ld ranks=%d grid=%dx%d threads=%d  Y=%.16g  "
-        "steps_s=%.3f  peak_MiB=%.1f\n",
+        "time_s=%.3f  peak_MiB=%.1f\n",
         spec.model.c_str(), spec.m, spec.n, nParticles, bonds, comm.size(),
         sim.decomposition().procs(0), sim.decomposition().procs(1), omp_get_max_threads(), y, t,
         mem);
