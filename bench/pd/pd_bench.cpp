@@ -9,15 +9,18 @@
 //                                           (ID ux uy uz) and DIR/lammps.data + DIR/lammps.in,
 //                                           the same problem for LAMMPS's PERI package
 //   pd_bench compare FILE_A FILE_B          largest |u_a - u_b| over the largest |u_a|
+//   pd_bench bandwidth                      one core's memory read bandwidth
 #include <mpi.h>
 #include <omp.h>
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iomanip>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "engine/atomic_file.hpp"
 #include "engine/comm.hpp"
@@ -146,6 +149,29 @@ int compare(int argc, char** argv) {
   return 0;
 }
 
+// Read bandwidth of one core: sums a 512 MiB array several times (the bond arrays are
+// streamed the same way), as a yardstick for the kernels' bytes per bond.
+int bandwidth() {
+  const std::size_t n = std::size_t(64) << 20;  // doubles
+  std::vector<double> a(n, 1.0);
+  double best = 0, sum = 0;
+  for (int rep = 0; rep < 5; ++rep) {
+    const double t0 = MPI_Wtime();
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+    for (std::size_t k = 0; k < n; k += 4) {
+      s0 += a[k];
+      s1 += a[k + 1];
+      s2 += a[k + 2];
+      s3 += a[k + 3];
+    }
+    const double t = MPI_Wtime() - t0;
+    sum += s0 + s1 + s2 + s3;
+    best = std::max(best, n * sizeof(double) / t);
+  }
+  std::printf("read bandwidth (1 core, best of 5): %.2f GB/s  (check %.0f)\n", best / 1e9, sum);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -156,7 +182,8 @@ int main(int argc, char** argv) {
     if (what == "cantilever") return cantilever(argc, argv, comm);
     if (what == "block") return block(argc, argv, comm);
     if (what == "compare") return comm.root() ? compare(argc, argv) : 0;
-    std::fprintf(stderr, "usage: pd_bench cantilever|block|compare ...\n");
+    if (what == "bandwidth") return comm.root() ? bandwidth() : 0;
+    std::fprintf(stderr, "usage: pd_bench cantilever|block|compare|bandwidth ...\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pd_bench: %s\n", e.what());
