@@ -75,7 +75,8 @@ class Lps final : public PeriModel {
                        THETA,
                        A_ / density_,
                        B_ / density_,
-                       criticalStretch_};
+                       criticalStretch_,
+                       &B};
     const LpsKernels k = kernels_;
     const double D = dim_;
     // Pass 1: dilatation of the owned particles, then to the ghosts.

@@ -29,7 +29,10 @@ inline void forceBond(const LpsView& v, const double* xi, std::size_t b, double 
   const double len = lengthTo(xi, xj, r);
   const double ext = len - ab[0];
   // Both ends judge a bond from the same numbers, so it breaks on both sides at once.
-  if (v.criticalStretch > 0 && ext > v.criticalStretch * ab[0]) ab[1] = 0;
+  if (v.criticalStretch > 0 && ext > v.criticalStretch * ab[0]) {
+    ab[1] = 0;
+    v.bonds->kill(b);
+  }
   const double rk =
       ab[1] * (v.a * ab[0] * (qi + xj[v.theta] * ab[2]) + v.b * (invMi + ab[2]) * ext);
   const double t = rk / len;
@@ -124,7 +127,10 @@ struct Four {
       const __m256d over = _mm256_cmp_pd(ext, _mm256_mul_pd(sc, len0), _CMP_GT_OQ);
       if (const int m = _mm256_movemask_pd(over)) {
         for (int k = 0; k < 4; ++k)
-          if (m & (1 << k)) v.attr[3 * (b + k) + 1] = 0;
+          if (m & (1 << k)) {
+            v.attr[3 * (b + k) + 1] = 0;
+            v.bonds->kill(b + k);
+          }
         w = _mm256_andnot_pd(over, w);
       }
     }

@@ -5,6 +5,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "engine/bonds.hpp"
+
 namespace pdq::peri {
 
 struct LpsView {
@@ -15,6 +17,7 @@ struct LpsView {
   std::size_t theta;       // column of the dilatation in the alterable rows
   double a, b;             // A/ρ and B/ρ of the force state
   double criticalStretch;  // 0: bonds never break
+  Bonds* bonds;            // a bond that breaks is also killed here (the engine's flag)
 };
 
 struct LpsKernels {

@@ -92,7 +92,7 @@ void PeriModel::prepare(Context& ctx) {
     for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
       double* a = B.attr(b);
       // A restart restored XI and WEIGHT; a fresh bond has XI = 0 and is intact.
-      const bool intact = a[XI] == 0 || a[WEIGHT] != 0;
+      const bool intact = B.alive(b) && (a[XI] == 0 || a[WEIGHT] != 0);
       const double* Xj = P.fixed(B.partner(b));
       const double dx = Xi[0] - Xj[0], dy = Xi[1] - Xj[1], dz = Xi[2] - Xj[2];
       a[XI] = std::sqrt(dx * dx + dy * dy + dz * dz);

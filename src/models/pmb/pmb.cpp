@@ -74,7 +74,7 @@ class Pmb final : public PeriModel {
       return;
     }
     const PmbView view{B.partners().data(), B.attr(0), P.alter(0), std::size_t(P.schema().nAlter()),
-                       criticalStretch_};
+                       criticalStretch_,    &B};
     const PmbKernel kernel = kernel_;
     const long n = static_cast<long>(P.owned());
 #pragma omp parallel for schedule(static)

@@ -16,7 +16,10 @@ inline void bond(const PmbView& v, const double* xi, std::size_t b, double* sx, 
   const double len = std::sqrt(r0 * r0 + r1 * r1 + r2 * r2);
   const double ext = len - ab[0];
   // Both ends judge a bond from the same numbers, so it breaks on both sides at once.
-  if (v.criticalStretch > 0 && ext > v.criticalStretch * ab[0]) ab[1] = 0;
+  if (v.criticalStretch > 0 && ext > v.criticalStretch * ab[0]) {
+    ab[1] = 0;
+    v.bonds->kill(b);
+  }
   const double t = ab[1] * ext / len;
   *sx += t * r0;
   *sy += t * r1;
@@ -58,7 +61,10 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
       const __m256d over = _mm256_cmp_pd(ext, _mm256_mul_pd(sc, len0), _CMP_GT_OQ);
       if (const int m = _mm256_movemask_pd(over)) {
         for (int k = 0; k < 4; ++k)
-          if (m & (1 << k)) v.attr[2 * (b + k) + 1] = 0;
+          if (m & (1 << k)) {
+            v.attr[2 * (b + k) + 1] = 0;
+            v.bonds->kill(b + k);
+          }
         w = _mm256_andnot_pd(over, w);
       }
     }

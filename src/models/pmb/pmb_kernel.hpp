@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "engine/bonds.hpp"
+
 namespace pdq::peri {
 
 struct PmbView {
@@ -15,6 +17,7 @@ struct PmbView {
   const double* x;              // alterable rows (x, y, z first), nA doubles each
   std::size_t nA;
   double criticalStretch;  // 0: bonds never break
+  Bonds* bonds;            // a bond that breaks is also killed here (the engine's flag)
 };
 
 using PmbKernel = void (*)(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
