@@ -1,0 +1,192 @@
+// Peridynamics benchmark driver (run under mpirun):
+//   pd_bench cantilever M N MODEL [PX PY [STEPS]]
+//                                           the thesis benchmark (§3.5): prints the
+//                                           monitored particle's final Y (16 digits),
+//                                           the time of the steps and the peak memory
+//   pd_bench block N MODEL STEPS [DIR [DT]] an N×N×N simple-cubic block, δ = 3 s, started
+//                                           from a smooth velocity field at rest position:
+//                                           prints throughput; with DIR writes DIR/pdq.disp
+//                                           (ID ux uy uz) and DIR/lammps.data + DIR/lammps.in,
+//                                           the same problem for LAMMPS's PERI package
+//   pd_bench compare FILE_A FILE_B          largest |u_a - u_b| over the largest |u_a|
+//   pd_bench bandwidth                      one core's memory read bandwidth
+#include <mpi.h>
+#include <omp.h>
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iomanip>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "engine/atomic_file.hpp"
+#include "engine/comm.hpp"
+#include "engine/error.hpp"
+#include "engine/model.hpp"
+#include "engine/simulation.hpp"
+#include "lammps_peer.hpp"
+#include "models/peri/peri_model.hpp"
+#include "prep/cantilever.hpp"
+#include "prep/lattice.hpp"
+
+namespace {
+
+using namespace pdq;
+
+double peakMemoryMiB() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;  // kB on Linux
+}
+
+// Runs the steps and returns their wall time (max over ranks), setup excluded.
+double timedRun(Simulation& sim, Comm& comm) {
+  sim.setup();
+  comm.barrier();
+  const double t0 = MPI_Wtime();
+  while (sim.advance()) {
+  }
+  const double t = comm.max(MPI_Wtime() - t0);
+  sim.finish();
+  return t;
+}
+
+// Sum over ranks of one owned particle's alterable attribute (exact: one term is non-zero).
+double attributeOf(Simulation& sim, Gid id, int column) {
+  Particles& P = sim.particles();
+  return sim.context().sumOwned(
+      [&](std::size_t i) { return P.gid(i) == id ? P.alter(i)[column] : 0.0; });
+}
+
+int cantilever(int argc, char** argv, Comm& comm) {
+  if (argc < 5)
+    throw InputError("pd_bench", 0, "usage: pd_bench cantilever M N MODEL [PX PY [STEPS]]");
+  prep::CantileverSpec spec;
+  spec.m = std::stoi(argv[2]);
+  spec.n = std::stoi(argv[3]);
+  spec.model = argv[4];
+  prep::CantileverProblem pb = prep::thesisCantilever(spec);
+  if (argc >= 7) pb.run.procs = {std::stoi(argv[5]), std::stoi(argv[6]), 1};
+  if (argc >= 8) pb.run.steps = std::stol(argv[7]);
+  pb.run.outDir = "pd_cantilever_out";
+  const std::size_t nParticles = pb.particles.size();
+  auto model = ModelRegistry::create(pb.model);
+  model->configure(pb.params);
+  pb.params.checkAllUsed();
+  Simulation sim(std::move(model), std::move(pb.particles), pb.run, comm);
+  const double t = timedRun(sim, comm);
+  const double y = attributeOf(sim, pb.monitored, 1);
+  const long bonds = comm.sum(static_cast<long>(sim.bonds().count()));
+  double mem = peakMemoryMiB();
+  ExactSum acc;
+  acc.add(mem);
+  mem = comm.sum(acc);
+  if (comm.root())
+    std::printf(
+        "%s m=%d n=%d particles=%zu bonds=%ld ranks=%d grid=%dx%d threads=%d  Y=%.16g  "
+        "time_s=%.3f  peak_MiB=%.1f\n",
+        spec.model.c_str(), spec.m, spec.n, nParticles, bonds, comm.size(),
+        sim.decomposition().procs(0), sim.decomposition().procs(1), omp_get_max_threads(), y, t,
+        mem);
+  return 0;
+}
+
+int block(int argc, char** argv, Comm& comm) {
+  if (argc < 5) throw InputError("pd_bench", 0, "usage: pd_bench block N MODEL STEPS [DIR [DT]]");
+  lammps::Block bl;
+  bl.n = std::stoi(argv[2]);
+  const std::string model = argv[3];
+  const long steps = std::stol(argv[4]);
+  const std::string dir = argc >= 6 ? argv[5] : "";
+  if (argc >= 7) bl.dt = std::stod(argv[6]);
+  Params p = lammps::blockParams(bl, model);
+  auto m = ModelRegistry::create(model);
+  m->configure(p);
+  p.checkAllUsed();
+  ParticleSet ps = lammps::blockParticles(bl, m->schema());
+  if (!dir.empty() && comm.root()) lammps::writeLammps(bl, model, steps, dir, ps);
+  RunConfig cfg;
+  cfg.steps = steps;
+  cfg.finalRestart = false;
+  cfg.outDir = dir.empty() ? "pd_block_out" : dir + "/pdq_out";
+  const std::size_t nParticles = ps.size();
+  Simulation sim(std::move(m), std::move(ps), cfg, comm);
+  const double t = timedRun(sim, comm);
+  const long bonds = comm.sum(static_cast<long>(sim.bonds().count()));
+  if (comm.root())
+    std::printf(
+        "pdq %s N=%zu bonds=%ld ranks=%d threads=%d steps=%ld time=%.4f s  "
+        "particle-steps/s=%.4g  bond-steps/s=%.4g  peak_MiB(rank0)=%.1f\n",
+        model.c_str(), nParticles, bonds, comm.size(), omp_get_max_threads(), steps, t,
+        nParticles * steps / t, bonds * double(steps) / t, peakMemoryMiB());
+  if (!dir.empty()) {
+    Particles& P = sim.particles();
+    std::ostringstream os;
+    os << std::setprecision(17);
+    for (std::size_t i = 0; i < P.owned(); ++i)
+      os << P.gid(i) << " " << P.alter(i)[0] - P.fixed(i)[0] << " " << P.alter(i)[1] - P.fixed(i)[1]
+         << " " << P.alter(i)[2] - P.fixed(i)[2] << "\n";
+    const std::string text = os.str();
+    auto blocks = comm.gather(std::vector<char>(text.begin(), text.end()));
+    if (comm.root()) {
+      std::string all;
+      for (auto& b : blocks) all.append(b.begin(), b.end());
+      writeFileAtomically(dir + "/pdq.disp", all);
+    }
+  }
+  return 0;
+}
+
+int compare(int argc, char** argv) {
+  if (argc < 4) throw InputError("pd_bench", 0, "usage: pd_bench compare A B");
+  const lammps::Difference d = lammps::compare(lammps::readDisplacements(argv[2]),
+                                               lammps::readDisplacements(argv[3]), argv[3]);
+  std::printf("particles=%zu max|u|=%.6e max|du|=%.6e relative=%.3e\n", d.particles, d.maxU,
+              d.maxDiff, d.relative());
+  return 0;
+}
+
+// Read bandwidth of one core: sums a 512 MiB array several times (the bond arrays are
+// streamed the same way), as a yardstick for the kernels' bytes per bond.
+int bandwidth() {
+  const std::size_t n = std::size_t(64) << 20;  // doubles
+  std::vector<double> a(n, 1.0);
+  double best = 0, sum = 0;
+  for (int rep = 0; rep < 5; ++rep) {
+    const double t0 = MPI_Wtime();
+    double s0 = 0, s1 = 0, s2 = 0, s3 = 0;
+    for (std::size_t k = 0; k < n; k += 4) {
+      s0 += a[k];
+      s1 += a[k + 1];
+      s2 += a[k + 2];
+      s3 += a[k + 3];
+    }
+    const double t = MPI_Wtime() - t0;
+    sum += s0 + s1 + s2 + s3;
+    best = std::max(best, n * sizeof(double) / t);
+  }
+  std::printf("read bandwidth (1 core, best of 5): %.2f GB/s  (check %.0f)\n", best / 1e9, sum);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  MpiSession mpi(&argc, &argv);
+  Comm comm(MPI_COMM_WORLD);
+  try {
+    const std::string what = argc > 1 ? argv[1] : "";
+    if (what == "cantilever") return cantilever(argc, argv, comm);
+    if (what == "block") return block(argc, argv, comm);
+    if (what == "compare") return comm.root() ? compare(argc, argv) : 0;
+    if (what == "bandwidth") return comm.root() ? bandwidth() : 0;
+    std::fprintf(stderr, "usage: pd_bench cantilever|block|compare|bandwidth ...\n");
+    return 2;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pd_bench: %s\n", e.what());
+    comm.abort(1);
+  }
+}

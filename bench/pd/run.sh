@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# Peridynamics benchmarks: bash bench/pd/run.sh BUILD_DIR [quick]   (about 15 minutes)
+#  1. pdq against LAMMPS's PERI package on the same 3D simple-cubic block (47^3 = 103,823
+#     particles, δ = 3 s, 200 steps, undamped and undamaged): displacement agreement and
+#     throughput (particle-steps/s, bond-steps/s) of each code at 1 and 2 ranks, and the
+#     ratio, for PMB (peri/pmb) and LPS (peri/lps);
+#  2. the thesis's Tables 3.2/3.3: the monitored particle's final Y of the 2D cantilever
+#     (721 x 309, 223,820 particles, LPS at ν = 0.22 and PMB at its ν = 1/3) for 1-4 ranks,
+#     several grids and 1-2 threads, which must all be identical;
+#  3. peak memory of the 1,122,892-particle cantilever (1617 x 693) and bytes per bond.
+# `quick` shrinks every problem (a smoke test of this script).
+set -euo pipefail
+BUILD=$(cd "${1:?usage: run.sh BUILD_DIR [quick]}" && pwd)
+QUICK=${2:-}
+BENCH="$BUILD/bench/pd/pd_bench"
+LMP=${LMP:-/usr/bin/lmp}
+MPIRUN=(mpirun --oversubscribe --allow-run-as-root)
+WORK=$(mktemp -d /tmp/pd_bench.XXXXXX)
+trap 'rm -rf "$WORK"' EXIT
+N=47; M=721; D=309; BIGM=1617; BIGN=693
+if [[ $QUICK == quick ]]; then N=14; M=90; D=30; BIGM=160; BIGN=70; fi
+export OMP_NUM_THREADS=1
+
+"$BENCH" bandwidth
+echo "(bytes per bond-step streamed by pdq: PMB 20 = 4 partner index + 16 attributes;"
+echo " LPS 56 = two passes of 4 + 24; partner positions come from cache)"
+echo
+echo "== pdq vs LAMMPS PERI: ${N}^3 simple-cubic block, delta = 3 s, 200 steps =="
+printf '%-5s %-5s %14s %14s %14s %14s %8s %12s\n' model ranks pdq_ptcl/s lmp_ptcl/s \
+  pdq_bond/s lmp_bond/s ratio rel_diff
+for model in pmb lps; do
+  for np in 1 2; do
+    dir="$WORK/$model.np$np"; mkdir -p "$dir"
+    out=$("${MPIRUN[@]}" -np "$np" "$BENCH" block "$N" "$model" 200 "$dir")
+    pdq_ps=$(sed -n 's/.*particle-steps\/s=\([^ ]*\).*/\1/p' <<<"$out")
+    pdq_bs=$(sed -n 's/.*bond-steps\/s=\([^ ]*\).*/\1/p' <<<"$out")
+    lmp_ps=n/a; lmp_bs=n/a; ratio=n/a; rel=n/a
+    if [[ -x $LMP ]]; then
+      (cd "$dir" && env -i PATH=/usr/bin:/bin HOME=/tmp OMP_NUM_THREADS=1 \
+         "${MPIRUN[@]}" -np "$np" "$LMP" -in lammps.in -log lammps.log >lmp.out 2>&1)
+      loop=$(grep '^Loop time' "$dir/lammps.log" | tail -1 | awk '{print $4}')
+      natoms=$(grep '^Loop time' "$dir/lammps.log" | tail -1 | awk '{print $(NF-1)}')
+      bonds=$(sed -n 's/.*total # of bonds = \([0-9]*\).*/\1/p' "$dir/lammps.log" | tail -1)
+      lmp_ps=$(awk -v n="$natoms" -v t="$loop" 'BEGIN{printf "%.4g", n*200/t}')
+      lmp_bs=$(awk -v n="$bonds" -v t="$loop" 'BEGIN{printf "%.4g", n*200/t}')
+      ratio=$(awk -v a="$pdq_ps" -v b="$lmp_ps" 'BEGIN{printf "%.2f", a/b}')
+      rel=$("$BENCH" compare "$dir/pdq.disp" "$dir/lammps.dump" | sed -n 's/.*relative=//p')
+    fi
+    printf '%-5s %-5s %14s %14s %14s %14s %8s %12s\n' "$model" "$np" "$pdq_ps" "$lmp_ps" \
+      "$pdq_bs" "$lmp_bs" "$ratio" "$rel"
+  done
+done
+
+echo
+echo "== Thesis Tables 3.2/3.3: cantilever ${M} x ${D}, monitored particle's final Y =="
+for model in lps pmb; do
+  ys=()
+  for cfg in "1 1 1 1" "1 1 1 2" "2 2 1 1" "2 1 2 2" "3 3 1 1" "4 4 1 1" "4 2 2 1"; do
+    read -r np px py th <<<"$cfg"
+    line=$(OMP_NUM_THREADS=$th "${MPIRUN[@]}" -np "$np" -x OMP_NUM_THREADS="$th" \
+             "$BENCH" cantilever "$M" "$D" "$model" "$px" "$py")
+    echo "$line"
+    ys+=("$(sed -n 's/.*Y=\([^ ]*\).*/\1/p' <<<"$line")")
+  done
+  if [[ $(printf '%s\n' "${ys[@]}" | sort -u | wc -l) == 1 ]]; then
+    echo "$model: all ${#ys[@]} runs give Y = ${ys[0]} (identical)"
+  else
+    echo "$model: RESULTS DIFFER"; exit 1
+  fi
+done
+
+echo
+echo "== Memory: cantilever ${BIGM} x ${BIGN} ($(( (BIGM + 1) * (BIGN + 1) )) particles), 1 rank, 5 steps =="
+for model in pmb lps; do
+  line=$("$BENCH" cantilever "$BIGM" "$BIGN" "$model" 1 1 5)
+  echo "$line"
+  awk '{for (i = 1; i <= NF; ++i) { split($i, kv, "="); v[kv[1]] = kv[2] } }
+       END { printf "%s: peak %.0f MiB = %.1f bytes per bond (all memory over %d bonds); %s\n",
+             $1, v["peak_MiB"], v["peak_MiB"] * 1048576 / v["bonds"], v["bonds"],
+             v["peak_MiB"] < 4096 ? "fits 4 GiB" : "DOES NOT FIT 4 GiB" }' <<<"$line"
+done

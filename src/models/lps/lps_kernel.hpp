@@ -1,0 +1,34 @@
+#pragma once
+// The LPS kernels: the dilatation sum and the acceleration of one particle from its bonds.
+// As for PMB (pmb_kernel.hpp), bonds are summed in four interleaved lanes added as
+// (l0 + l1) + (l2 + l3); the AVX2 and portable versions give the same bits.
+#include <cstddef>
+#include <cstdint>
+
+#include "engine/bonds.hpp"
+
+namespace pdq::peri {
+
+struct LpsView {
+  const std::int32_t* partner;  // local index of each bond's partner
+  double* attr;                 // per bond: reference length, ω V_j w (0 once broken), 1/m_j
+  const double* x;              // alterable rows (x, y, z first), nA doubles each
+  std::size_t nA;
+  std::size_t theta;       // column of the dilatation in the alterable rows
+  double a, b;             // A/ρ and B/ρ of the force state
+  double criticalStretch;  // 0: bonds never break
+  Bonds* bonds;            // a bond that breaks is also killed here (the engine's flag)
+};
+
+struct LpsKernels {
+  // Σ_b ω V_j w |ξ| e over bonds [b0, b1) of particle i.
+  double (*dilatation)(const LpsView& v, std::size_t i, std::size_t b0, std::size_t b1);
+  // Acceleration of particle i (qi = θ_i / m_i, invMi = 1 / m_i); breaks overstretched bonds.
+  void (*force)(const LpsView& v, std::size_t i, std::size_t b0, std::size_t b1, double qi,
+                double invMi, double acc[3]);
+};
+
+LpsKernels lpsKernels();  // AVX2 when the CPU has it
+LpsKernels lpsKernelsPortable();
+
+}  // namespace pdq::peri

@@ -1,0 +1,99 @@
+#include "models/pmb/pmb_kernel.hpp"
+
+#include <immintrin.h>
+
+#include <cmath>
+
+namespace pdq::peri {
+namespace {
+
+// One bond into lane sums s[3]: returns nothing, breaks the bond when overstretched.
+inline void bond(const PmbView& v, const double* xi, std::size_t b, double* sx, double* sy,
+                 double* sz) {
+  const double* xj = v.x + v.partner[b] * v.nA;
+  double* ab = v.attr + 2 * b;
+  const double r0 = xj[0] - xi[0], r1 = xj[1] - xi[1], r2 = xj[2] - xi[2];
+  const double len = std::sqrt(r0 * r0 + r1 * r1 + r2 * r2);
+  const double ext = len - ab[0];
+  // Both ends judge a bond from the same numbers, so it breaks on both sides at once.
+  if (v.criticalStretch > 0 && ext > v.criticalStretch * ab[0]) {
+    ab[1] = 0;
+    v.bonds->kill(b);
+  }
+  const double t = ab[1] * ext / len;
+  *sx += t * r0;
+  *sy += t * r1;
+  *sz += t * r2;
+}
+
+inline void finish(const double* lx, const double* ly, const double* lz, double acc[3]) {
+  acc[0] = (lx[0] + lx[1]) + (lx[2] + lx[3]);
+  acc[1] = (ly[0] + ly[1]) + (ly[2] + ly[3]);
+  acc[2] = (lz[0] + lz[1]) + (lz[2] + lz[3]);
+}
+
+[[gnu::target("avx2")]] void pmbKernelAvx2(const PmbView& v, std::size_t i, std::size_t b0,
+                                           std::size_t b1, double acc[3]) {
+  const double* xi = v.x + i * v.nA;
+  const __m256d xi0 = _mm256_set1_pd(xi[0]), xi1 = _mm256_set1_pd(xi[1]),
+                xi2 = _mm256_set1_pd(xi[2]), sc = _mm256_set1_pd(v.criticalStretch);
+  __m256d ax = _mm256_setzero_pd(), ay = _mm256_setzero_pd(), az = _mm256_setzero_pd();
+  std::size_t b = b0;
+  for (; b + 4 <= b1; b += 4) {
+    // Rows of the four partners (x, y, z, and one more column), transposed.
+    const __m256d r0 = _mm256_loadu_pd(v.x + v.partner[b] * v.nA);
+    const __m256d r1 = _mm256_loadu_pd(v.x + v.partner[b + 1] * v.nA);
+    const __m256d r2 = _mm256_loadu_pd(v.x + v.partner[b + 2] * v.nA);
+    const __m256d r3 = _mm256_loadu_pd(v.x + v.partner[b + 3] * v.nA);
+    const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
+    const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
+    const __m256d dx = _mm256_sub_pd(_mm256_permute2f128_pd(t0, t2, 0x20), xi0);
+    const __m256d dy = _mm256_sub_pd(_mm256_permute2f128_pd(t1, t3, 0x20), xi1);
+    const __m256d dz = _mm256_sub_pd(_mm256_permute2f128_pd(t0, t2, 0x31), xi2);
+    // Bond attributes (length, weight) of the four bonds, de-interleaved.
+    const __m256d a01 = _mm256_loadu_pd(v.attr + 2 * b), a23 = _mm256_loadu_pd(v.attr + 2 * b + 4);
+    const __m256d len0 = _mm256_permute4x64_pd(_mm256_unpacklo_pd(a01, a23), 0xD8);
+    __m256d w = _mm256_permute4x64_pd(_mm256_unpackhi_pd(a01, a23), 0xD8);
+    const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(
+        _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)));
+    const __m256d ext = _mm256_sub_pd(len, len0);
+    if (v.criticalStretch > 0) {
+      const __m256d over = _mm256_cmp_pd(ext, _mm256_mul_pd(sc, len0), _CMP_GT_OQ);
+      if (const int m = _mm256_movemask_pd(over)) {
+        for (int k = 0; k < 4; ++k)
+          if (m & (1 << k)) {
+            v.attr[2 * (b + k) + 1] = 0;
+            v.bonds->kill(b + k);
+          }
+        w = _mm256_andnot_pd(over, w);
+      }
+    }
+    const __m256d t = _mm256_div_pd(_mm256_mul_pd(w, ext), len);
+    ax = _mm256_add_pd(ax, _mm256_mul_pd(t, dx));
+    ay = _mm256_add_pd(ay, _mm256_mul_pd(t, dy));
+    az = _mm256_add_pd(az, _mm256_mul_pd(t, dz));
+  }
+  alignas(32) double lx[4], ly[4], lz[4];
+  _mm256_store_pd(lx, ax);
+  _mm256_store_pd(ly, ay);
+  _mm256_store_pd(lz, az);
+  for (int k = 0; b < b1; ++b, ++k) bond(v, xi, b, &lx[k], &ly[k], &lz[k]);
+  finish(lx, ly, lz, acc);
+}
+
+}  // namespace
+
+void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
+                       double acc[3]) {
+  const double* xi = v.x + i * v.nA;
+  double lx[4] = {0, 0, 0, 0}, ly[4] = {0, 0, 0, 0}, lz[4] = {0, 0, 0, 0};
+  std::size_t b = b0;
+  for (; b + 4 <= b1; b += 4)
+    for (int k = 0; k < 4; ++k) bond(v, xi, b + k, &lx[k], &ly[k], &lz[k]);
+  for (int k = 0; b < b1; ++b, ++k) bond(v, xi, b, &lx[k], &ly[k], &lz[k]);
+  finish(lx, ly, lz, acc);
+}
+
+PmbKernel pmbKernel() { return __builtin_cpu_supports("avx2") ? pmbKernelAvx2 : pmbKernelPortable; }
+
+}  // namespace pdq::peri

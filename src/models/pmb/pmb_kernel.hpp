@@ -1,0 +1,31 @@
+#pragma once
+// The PMB force kernel: the acceleration of one particle from its bonds. Bonds are summed
+// in four interleaved lanes (bond k of the particle goes to lane k mod 4) and the lanes
+// are added as (l0 + l1) + (l2 + l3), so an AVX2 version can do four bonds at once; the
+// portable version follows exactly the same order, so both give the same bits, on any
+// machine and for any number of ranks or threads.
+#include <cstddef>
+#include <cstdint>
+
+#include "engine/bonds.hpp"
+
+namespace pdq::peri {
+
+struct PmbView {
+  const std::int32_t* partner;  // local index of each bond's partner
+  double* attr;                 // per bond: reference length, weight (0 once broken)
+  const double* x;              // alterable rows (x, y, z first), nA doubles each
+  std::size_t nA;
+  double criticalStretch;  // 0: bonds never break
+  Bonds* bonds;            // a bond that breaks is also killed here (the engine's flag)
+};
+
+using PmbKernel = void (*)(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
+                           double acc[3]);
+
+// The fastest kernel this CPU runs (AVX2 when present, else the portable one).
+PmbKernel pmbKernel();
+void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
+                       double acc[3]);
+
+}  // namespace pdq::peri

@@ -1,0 +1,58 @@
+#include "prep/cantilever.hpp"
+
+#include <sstream>
+
+#include "engine/error.hpp"
+#include "engine/model.hpp"
+#include "prep/lattice.hpp"
+
+namespace pdq::prep {
+
+namespace {
+std::string num(double v) {
+  std::ostringstream os;
+  os.precision(17);
+  os << v;
+  return os.str();
+}
+}  // namespace
+
+CantileverProblem thesisCantilever(const CantileverSpec& spec) {
+  if (spec.m < 1 || spec.n < 1) throw InputError("cantilever", 0, "m and n must be at least 1");
+  if (spec.model != "lps" && spec.model != "pmb")
+    throw InputError("cantilever", 0, "the cantilever runs with model \"lps\" or \"pmb\"");
+  CantileverProblem pb;
+  pb.model = spec.model;
+  const double s = spec.spacing, delta = spec.horizonFactor * s;
+  Params& p = pb.params;
+  p.set("E", num(spec.E));
+  if (spec.model == "lps") p.set("nu", num(spec.nu));
+  p.set("horizon", num(delta));
+  p.set("thickness", num(s));
+  p.set("density", num(spec.density));
+  p.set("dt", num(spec.dt));
+  p.set("damping", num(spec.damping));
+  p.set("lattice_spacing", num(s));
+
+  const Schema schema = ModelRegistry::create(spec.model)->schema();
+  ParticleSet& ps = pb.particles;
+  ps.nFixed = schema.nFixed();
+  ps.nAlter = schema.nAlter();
+  appendLattice(ps, squareLattice(spec.m + 1, spec.n + 1, s));
+  const int bc = schema.fixedIndex("bc_x"), fy = schema.fixedIndex("fy"),
+            vol = schema.fixedIndex("volume");
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    double* f = ps.fixedRow(k);
+    const long i = static_cast<long>(k % (spec.m + 1));
+    f[vol] = s * s * s;  // s² × thickness s
+    if (i * s < delta) f[bc] = f[bc + 1] = f[bc + 2] = 1;
+    if (i == spec.m) f[fy] = spec.load;
+  }
+  pb.monitored = ps.gid.back();
+  pb.run.minCellSize = spec.cellFactor * delta;
+  pb.run.steps = spec.steps;
+  pb.run.finalRestart = false;
+  return pb;
+}
+
+}  // namespace pdq::prep
