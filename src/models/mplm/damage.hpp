@@ -15,16 +15,15 @@ struct DamageLaw {
   double alphaC = 5.728;  // α_c
   double beta = 0.1;      // β: weight of the curvature in ε_mp± (eqs. 4.11, 4.12)
 
-  // Ω of eqs. 4.13–4.18 for one limit (ε/lim > 1 means beyond it); 0 below, 1 at α·lim.
+  // Ω of eqs. 4.13–4.18 for one limit: 0 up to it, 1 from α times it (eps/lim = ratio).
   static double omega(double ratio, double alpha) {
-    if (ratio <= 1) return 0;
     if (ratio >= alpha) return 1;
     return alpha / (alpha - 1) * (1 - 1 / ratio);
   }
   // Updates ω_t, ω_c from ε_mp+ and ε_mp−; returns ω = max(ω_t, ω_c).
   double update(double epsPlus, double epsMinus, double& omegaT, double& omegaC) const {
-    omegaT = std::max(omegaT, omega(epsPlus / epsT, alphaT));
-    omegaC = std::max(omegaC, omega(epsMinus / epsC, alphaC));
+    if (epsPlus > epsT) omegaT = std::max(omegaT, omega(epsPlus / epsT, alphaT));
+    if (epsMinus < epsC) omegaC = std::max(omegaC, omega(epsMinus / epsC, alphaC));
     return std::max(omegaT, omegaC);
   }
 };

@@ -56,9 +56,8 @@ double highestFrequency(Context& ctx, const std::vector<Interaction>& inter, con
       for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
         const Interaction& k = inter[b];
         const double* aj = P.alter(k.j);
-        const Chord ch = smallChord(k, aj[VX] - a[VX], aj[VY] - a[VY]);
-        const EndLoad e =
-            elasticForce(k, ch, a[OMEGA] - ch.phi, aj[OMEGA] - ch.phi, DamageLaw{}, nullptr, false);
+        const Chord ch = smallChord(k, aj[VX] - a[VX], aj[VY] - a[VY], a[OMEGA], aj[OMEGA]);
+        const EndLoad e = elasticForce(k, ch, DamageLaw{}, nullptr, false);
         fx += e.fx;
         fy += e.fy;
         m += e.m;

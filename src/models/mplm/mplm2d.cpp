@@ -77,6 +77,7 @@ class Mplm2d final : public Model {
     Bonds& B = ctx.bonds;
     const bool corot = par_.kinematics == "corotational";
     const long n = static_cast<long>(P.owned());
+    if (corot) turnings(P);
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
       const double* a = P.alter(i);
@@ -85,13 +86,10 @@ class Mplm2d final : public Model {
         const Interaction& k = inter_[b];
         const double* aj = P.alter(k.j);
         const double rx = aj[AX] - a[AX], ry = aj[AY] - a[AY];
-        const Chord ch = corot ? corotChord(k, rx, ry) : smallChord(k, rx - k.r0x, ry - k.r0y);
-        double ti = a[THETA] - ch.phi, tj = aj[THETA] - ch.phi;
-        if (corot) {
-          ti = wrapAngle(ti);
-          tj = wrapAngle(tj);
-        }
-        const EndLoad e = elasticForce(k, ch, ti, tj, par_.law, B.attr(b), true);
+        const Chord ch = corot ? corotChord(k, rx, ry, cs_[2 * i], cs_[2 * i + 1], cs_[2 * k.j],
+                                            cs_[2 * k.j + 1])
+                               : smallChord(k, rx - k.r0x, ry - k.r0y, a[THETA], aj[THETA]);
+        const EndLoad e = elasticForce(k, ch, par_.law, B.attr(b), true);
         fx += e.fx + e.keep * k.c * (aj[VX] - a[VX]);
         fy += e.fy + e.keep * k.c * (aj[VY] - a[VY]);
         m += e.m + e.keep * k.cr * (aj[OMEGA] - a[OMEGA]);
@@ -274,6 +272,18 @@ class Mplm2d final : public Model {
     return k;
   }
 
+  // cos θ and sin θ of every local particle (owned and ghosts), once per step.
+  void turnings(const Particles& P) {
+    const long nl = static_cast<long>(P.local());
+    cs_.resize(2 * P.local());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < nl; ++i) {
+      const double th = P.alter(i)[THETA];
+      cs_[2 * i] = std::cos(th);
+      cs_[2 * i + 1] = std::sin(th);
+    }
+  }
+
   // Load factor at a step: linear up to rampFraction of the run, then held.
   double ramp(const Context& ctx, long step) const {
     const double rampSteps = par_.rampFraction * static_cast<double>(ctx.steps());
@@ -293,11 +303,12 @@ class Mplm2d final : public Model {
       const Interaction& k = inter_[b];
       const double* aj = P.alter(k.j);
       const double rx = aj[AX] - a[AX], ry = aj[AY] - a[AY];
-      const Chord ch = corot ? corotChord(k, rx, ry) : smallChord(k, rx - k.r0x, ry - k.r0y);
-      const double ti = wrapAngle(a[THETA] - ch.phi), tj = wrapAngle(aj[THETA] - ch.phi);
+      const Chord ch = corot ? corotChord(k, rx, ry, std::cos(a[THETA]), std::sin(a[THETA]),
+                                          std::cos(aj[THETA]), std::sin(aj[THETA]))
+                             : smallChord(k, rx - k.r0x, ry - k.r0y, a[THETA], aj[THETA]);
       double state[N_BOND];
       std::copy_n(B.attr(b), N_BOND, state);
-      const EndLoad e = elasticForce(k, ch, ti, tj, par_.law, state, false);
+      const EndLoad e = elasticForce(k, ch, par_.law, state, false);
       sxx += rx * e.fx;
       syy += ry * e.fy;
       sxy += 0.5 * (rx * e.fy + ry * e.fx);
@@ -309,6 +320,7 @@ class Mplm2d final : public Model {
 
   Parameters par_;
   std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
+  std::vector<double> cs_;          // cos θ, sin θ per local particle (co-rotational form)
   Inertia in_;
   double omegaMax_ = 0;
 };

@@ -1,0 +1,46 @@
+#pragma once
+// Strength as the thesis defines it (§4.4): "the peak load at which static equilibrium
+// can still be achieved". A trial runs the example with its loads ramped to a peak over
+// rampFraction of the run and then held; equilibrium holds when, in the hold phase, no
+// more interactions break and the monitored displacement settles. Bisection over the peak
+// brackets the strength.
+#include <string>
+#include <vector>
+
+#include "engine/comm.hpp"
+#include "models/mplm/examples.hpp"
+
+namespace pdq::mplm {
+
+struct StrengthOptions {
+  double settle = 0.05;  // allowed |u(end) − u(mid hold)| / |u(mid hold)|
+  double runaway = 50;   // stop a trial once |u| exceeds this × |u| at the start of the hold
+  double relTol = 0.02;  // bisection stops when (hi − lo) ≤ relTol · lo
+  int maxTrials = 16;
+  std::map<std::string, std::string> overrides;  // extra model parameters
+};
+
+struct Trial {
+  double load = 0;
+  bool holds = false;
+  double uHold = 0, uMid = 0, uEnd = 0;  // monitored displacement: hold start, mid, end
+  double brokenMid = 0, brokenEnd = 0;   // broken interactions
+  long steps = 0;                        // steps run (fewer when stopped as runaway)
+  std::string mode;                      // failure mode judged from the damage
+};
+
+struct Strength {
+  double lower = 0, upper = 0;  // holds at `lower`, fails at `upper`
+  std::string mode;             // judged at the lowest failing trial
+  std::vector<Trial> trials;
+};
+
+// One trial at peak load `load` (in the example's unit).
+Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions& opt = {});
+
+// Bisection between a load that holds (lo) and one that fails (hi); the bracket is first
+// widened (lo halved, hi doubled) until it is one.
+Strength findStrength(const Example& ex, double lo, double hi, Comm& comm,
+                      const StrengthOptions& opt = {});
+
+}  // namespace pdq::mplm
