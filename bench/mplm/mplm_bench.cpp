@@ -3,7 +3,8 @@
 //   mplm_bench time <example> [load]          full run, prints wall-clock seconds
 //   mplm_bench trial <example> <load>         one trial: holds or fails, and why
 //   mplm_bench strength <example> <lo> <hi>   bisection; prints the bracket and mode
-// Extra model parameters as key=value after the arguments.
+// Extra model parameters as key=value after the arguments (steps=, rel_tol= and settle=
+// set the run length and the search's tolerances).
 #include <mpi.h>
 
 #include <chrono>
