@@ -40,6 +40,10 @@ int main(int argc, char** argv) {
       nums.push_back(std::atof(a.c_str()));
     else if (a.substr(0, eq) == "steps")
       ex.steps = std::atol(a.c_str() + eq + 1);
+    else if (a.substr(0, eq) == "rel_tol")
+      opt.relTol = std::atof(a.c_str() + eq + 1);
+    else if (a.substr(0, eq) == "settle")
+      opt.settle = std::atof(a.c_str() + eq + 1);
     else
       opt.overrides[a.substr(0, eq)] = a.substr(eq + 1);
   }
