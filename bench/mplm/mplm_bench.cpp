@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
             "%ld steps, damage: %s\n",
             ex.name.c_str(), tr.load, ex.unit.c_str(), tr.holds ? "holds" : "FAILS", tr.uHold,
             tr.uMid, tr.uEnd, tr.brokenMid, tr.brokenEnd, tr.steps, tr.mode.c_str());
+      if (comm.root()) std::printf("%s", tr.log.c_str());
     } else if (what == "strength") {
       const mplm::Strength st = mplm::findStrength(ex, nums.at(0), nums.at(1), comm, opt);
       if (comm.root()) {

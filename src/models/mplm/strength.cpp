@@ -100,6 +100,7 @@ Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions
   tr.holds = !runaway && std::isfinite(tr.uEnd) && tr.brokenEnd == tr.brokenMid &&
              std::fabs(tr.uEnd - tr.uMid) <= opt.settle * std::fabs(tr.uMid);
   tr.mode = failureMode(ex, sim.context());
+  tr.log = sim.debugText();
   return tr;
 }
 

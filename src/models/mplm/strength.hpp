@@ -27,6 +27,7 @@ struct Trial {
   double brokenMid = 0, brokenEnd = 0;   // broken interactions
   long steps = 0;                        // steps run (fewer when stopped as runaway)
   std::string mode;                      // failure mode judged from the damage
+  std::string log;                       // the run's start-up log (time step, ...)
 };
 
 struct Strength {
