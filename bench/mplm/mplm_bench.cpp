@@ -3,8 +3,8 @@
 //   mplm_bench time <example> [load]          full run, prints wall-clock seconds
 //   mplm_bench trial <example> <load>         one trial: holds or fails, and why
 //   mplm_bench strength <example> <lo> <hi>   bisection; prints the bracket and mode
-// Extra model parameters as key=value after the arguments (steps=, rel_tol= and settle=
-// set the run length and the search's tolerances).
+// Extra model parameters as key=value after the arguments (steps=, rel_tol=, settle=
+// and stable_step=true set the run length, the search's tolerances and its time step).
 #include <mpi.h>
 
 #include <chrono>
@@ -44,6 +44,8 @@ int main(int argc, char** argv) {
       opt.relTol = std::atof(a.c_str() + eq + 1);
     else if (a.substr(0, eq) == "settle")
       opt.settle = std::atof(a.c_str() + eq + 1);
+    else if (a.substr(0, eq) == "stable_step")
+      opt.stableStep = std::string(a.c_str() + eq + 1) == "true";
     else
       opt.overrides[a.substr(0, eq)] = a.substr(eq + 1);
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include "engine/model.hpp"
 #include "engine/simulation.hpp"
@@ -48,6 +49,24 @@ std::string failureMode(const Example& ex, Context& ctx) {
 
 }  // namespace
 
+namespace {
+
+std::unique_ptr<Simulation> makeSimulation(const Example& ex, const Params& p, long steps,
+                                           Comm& comm) {
+  auto model = ModelRegistry::create("mplm2d");
+  model->configure(p);
+  p.checkAllUsed();
+  RunConfig cfg;
+  cfg.steps = steps;
+  cfg.outDir = "strength_out";
+  cfg.finalRestart = false;
+  auto sim = std::make_unique<Simulation>(std::move(model), ex.particles, cfg, comm);
+  sim->setup();
+  return sim;
+}
+
+}  // namespace
+
 Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions& opt) {
   Params p("strength trial");
   for (const auto& [k, v] : ex.params) p.set(k, v);
@@ -55,20 +74,20 @@ Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.17g", load);
   p.set("load_scale", buf);
-  auto model = ModelRegistry::create("mplm2d");
-  model->configure(p);
-  p.checkAllUsed();
-  RunConfig cfg;
-  cfg.steps = ex.steps;
-  cfg.outDir = "strength_out";
-  cfg.finalRestart = false;
-  Simulation sim(std::move(model), ex.particles, cfg, comm);
-  sim.setup();
+  long steps = ex.steps;
+  if (opt.stableStep) {
+    const double duration = ex.steps * p.number("dt", 0.0);
+    p.set("dt", "0");
+    const double dt = makeSimulation(ex, p, 1, comm)->context().dt();
+    if (duration > 0) steps = static_cast<long>(std::ceil(duration / dt));
+  }
+  auto simPtr = makeSimulation(ex, p, steps, comm);
+  Simulation& sim = *simPtr;
   const auto names = sim.model().globals();
   const double rampFraction = p.number("ramp_fraction", 0.75);
-  const long holdStart = static_cast<long>(std::ceil(rampFraction * ex.steps));
-  const long mid = holdStart + (ex.steps - holdStart) / 2;
-  const long check = std::max(1L, ex.steps / 100);
+  const long holdStart = static_cast<long>(std::ceil(rampFraction * steps));
+  const long mid = holdStart + (steps - holdStart) / 2;
+  const long check = std::max(1L, steps / 100);
   Trial tr;
   tr.load = load;
   bool runaway = false;
@@ -83,6 +102,7 @@ Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions
       break;
     }
     if (step == holdStart) tr.uHold = u;
+    if (step >= holdStart && step <= mid) tr.uPeak = std::max(tr.uPeak, u);
     if (step == mid) {
       tr.uMid = u;
       tr.brokenMid = globalValue(sim, names, values, "broken");
@@ -98,7 +118,7 @@ Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions
       std::hypot(globalValue(sim, names, values, "ux"), globalValue(sim, names, values, "uy"));
   tr.brokenEnd = globalValue(sim, names, values, "broken");
   tr.holds = !runaway && std::isfinite(tr.uEnd) && tr.brokenEnd == tr.brokenMid &&
-             std::fabs(tr.uEnd - tr.uMid) <= opt.settle * std::fabs(tr.uMid);
+             tr.uEnd <= (1 + opt.settle) * tr.uPeak;
   tr.mode = failureMode(ex, sim.context());
   tr.log = sim.debugText();
   return tr;
