@@ -27,7 +27,7 @@ std::vector<std::string> exampleNames() {
           "rc_beam",   "rc_beam_stirrups", "rc_beam_shear", "deep_beam"};
 }
 
-Example plate(const std::string& orientation, bool compression) {
+Example plate(const std::string& orientation, bool compression, bool traction) {
   constexpr double width = 0.14, height = 0.24, t = 0.12;
   const auto o = prep::hexOrientation(orientation);
   Example ex;
@@ -43,8 +43,13 @@ Example plate(const std::string& orientation, bool compression) {
   const auto top = select(ex.particles, [&](const double* f) { return f[1] > yMax - reach; });
   const auto bottom = select(ex.particles, [&](const double* f) { return f[1] < reach; });
   const double force = 1e6 * width * t * (compression ? -1 : 1);  // 1 MPa on the section
-  load(ex.particles, top, 0, force / top.size());
-  load(ex.particles, bottom, 0, -force / bottom.size());
+  if (traction) {
+    loadUniform(ex.particles, top, 0, 0, width, 0, force);
+    loadUniform(ex.particles, bottom, 0, 0, width, 0, -force);
+  } else {
+    load(ex.particles, top, 0, force / top.size());
+    load(ex.particles, bottom, 0, -force / bottom.size());
+  }
   monitor(ex.particles, top);
   ex.params = thesisParams;
   ex.params["thickness"] = number(t);
@@ -80,13 +85,18 @@ Example beam(const BeamSpec& b) {
       return isConcrete(f) && std::fabs(f[0] - x) < tol && std::fabs(f[1] - y) < tol;
     });
   };
-  const auto left = concreteAt(0, 0), right = concreteAt(b.span, 0);
-  if (left.size() != 1 || right.size() != 1)
+  if (concreteAt(0, 0).size() != 1 || concreteAt(b.span, 0).size() != 1)
     throw std::logic_error("beam: no lattice particle at a bottom corner");
+  const auto left = select(ps, [&](const double* f) {
+    return isConcrete(f) && f[1] < tol && f[0] <= b.supportWidth + tol;
+  });
+  const auto right = select(ps, [&](const double* f) {
+    return isConcrete(f) && f[1] < tol && f[0] >= b.span - b.supportWidth - tol;
+  });
   constrain(ps, left, FIX_X | FIX_Y);
   constrain(ps, right, FIX_Y);
   const auto top = select(ps, [&](const double* f) { return isConcrete(f) && f[1] > yTop - tol; });
-  load(ps, top, 0, -1e3 * b.span / top.size());  // 1 kN/m over the span
+  loadUniform(ps, top, 0, 0, b.span, 0, -1e3 * b.span);  // 1 kN/m over the span
   const auto mid = select(ps, [&](const double* f) {
     return isConcrete(f) && f[1] < tol && std::fabs(f[0] - b.span / 2) <= s / 2 + tol;
   });

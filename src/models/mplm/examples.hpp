@@ -29,15 +29,21 @@ Example example(const std::string& name);
 
 // §4.4.1/4.4.2: the 14 × 24 × 12 cm plate loaded along Y on its two end layers each side.
 // `orientation` "x" (bonds along X: the load is across the bonds, Fig. 4.6a) or "y".
-Example plate(const std::string& orientation, bool compression);
+// As in the thesis, every loaded particle carries the same force; `traction` instead
+// shares the force by tributary width, as the nodal loads of a uniform traction.
+Example plate(const std::string& orientation, bool compression, bool traction = false);
 
 struct BeamSpec {
   double span = 1.16, depth = 0.26, thickness = 0.12;
   double barDiameter = 0, barCentroid = 0.02;  // 0: plain concrete
   double stirrupDiameter = 0, stirrupFirst = 0.04, stirrupSpacing = 0.15;
   double stirrupCover = 0.02;  // stirrups run from the bar's centroid to depth − cover
+  // Bottom-row particles within this distance of an end are supported (0: the corner
+  // particle alone). A single particle carrying the whole reaction (8.7 kN at the plain
+  // beam's cracking load) is damaged long before the beam fails.
+  double supportWidth = 0.04;
 };
-// §4.4.3–4.4.6: simply supported (pinned bottom-left corner, roller bottom-right), every
+// §4.4.3–4.4.6: simply supported (pinned at the bottom-left end, roller at the right), every
 // top-layer particle loaded downward (uniform line load), monitor at bottom midspan.
 Example beam(const BeamSpec& spec);
 

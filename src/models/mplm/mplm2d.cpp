@@ -108,6 +108,9 @@ class Mplm2d final : public Model {
     const double h = ctx.dt();
     const double loadNow = par_.loadScale * ramp(ctx, ctx.step() - 1);
     const double dispNext = par_.loadScale * ramp(ctx, ctx.step());
+    const bool held = ramp(ctx, ctx.step() - 1) >= 1;
+    if (held && par_.holdDampingRatio > 0 && holdViscous_ < 0) holdViscous_ = holdDamping(ctx);
+    const double viscous = par_.viscous + (held && holdViscous_ > 0 ? holdViscous_ : 0.0);
     const long n = static_cast<long>(P.owned());
     constexpr int pos[3] = {AX, AY, THETA}, vel[3] = {VX, VY, OMEGA};
     constexpr int bit[3] = {FIX_X, FIX_Y, FIX_T};
@@ -124,7 +127,7 @@ class Mplm2d final : public Model {
           a[vel[d]] = (target - a[pos[d]]) / h;
           a[pos[d]] = target;
         } else {
-          const double acc = (F[d] + X[LOAD_X + d] * loadNow) * inv[d] - par_.viscous * a[vel[d]];
+          const double acc = (F[d] + X[LOAD_X + d] * loadNow) * inv[d] - viscous * a[vel[d]];
           a[vel[d]] += acc * h;
           a[pos[d]] += a[vel[d]] * h;
         }
@@ -272,6 +275,32 @@ class Mplm2d final : public Model {
     return k;
   }
 
+  // 2 ζ_h ω₁, ω₁² = F·u / (u·M·u) the Rayleigh quotient of the current deflection under
+  // the held loads (close to static by the end of a slow ramp); 0 without loads.
+  double holdDamping(Context& ctx) const {
+    const Particles& P = ctx.particles;
+    const double scale = par_.loadScale;
+    const double work = ctx.sumOwned([&](std::size_t i) {
+      const double* X = P.fixed(i);
+      const double* a = P.alter(i);
+      return scale *
+             (X[LOAD_X] * (a[AX] - X[FX_X]) + X[LOAD_Y] * (a[AY] - X[FX_Y]) + X[LOAD_M] * a[THETA]);
+    });
+    const double inertia = ctx.sumOwned([&](std::size_t i) {
+      const double* X = P.fixed(i);
+      const double* a = P.alter(i);
+      const double ux = a[AX] - X[FX_X], uy = a[AY] - X[FX_Y];
+      return in_.mass[i] * (ux * ux + uy * uy) + in_.inertia[i] * a[THETA] * a[THETA];
+    });
+    if (!(work > 0 && inertia > 0)) return 0;
+    const double omega1 = std::sqrt(work / inertia);
+    if (ctx.root())
+      ctx.log() << "mplm2d: loads held from step " << ctx.step() << "; Rayleigh frequency "
+                << omega1 << " rad/s, hold damping " << 2 * par_.holdDampingRatio * omega1
+                << " 1/s\n";
+    return 2 * par_.holdDampingRatio * omega1;
+  }
+
   // cos θ and sin θ of every local particle (owned and ghosts), once per step.
   void turnings(const Particles& P) {
     const long nl = static_cast<long>(P.local());
@@ -323,6 +352,7 @@ class Mplm2d final : public Model {
   std::vector<double> cs_;          // cos θ, sin θ per local particle (co-rotational form)
   Inertia in_;
   double omegaMax_ = 0;
+  double holdViscous_ = -1;  // hold-phase damping, once computed
 };
 
 PDQ_REGISTER_MODEL(Mplm2d, "mplm2d",

@@ -28,7 +28,10 @@ struct Parameters {
   double zeta = 0.05;          // ζ of relative translational velocity
   double zetaRotation = 0.05;  // ζ of relative angular velocity
   double viscous = 0;          // mass-proportional damping c/m (1/s), dynamic relaxation
-  double dt = 0;               // 0: from the highest frequency
+  // Once the loads are held, mass-proportional damping 2 ζ_h ω₁ with ω₁ the Rayleigh
+  // frequency of the deflected shape (strength search: lets a structure that stands settle).
+  double holdDampingRatio = 0;
+  double dt = 0;  // 0: from the highest frequency
   double dtSafety = 0.9;
   int powerIterations = 60;
   // Loading

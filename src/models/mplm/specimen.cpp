@@ -1,7 +1,9 @@
 #include "models/mplm/specimen.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <map>
 
 #include "models/mplm/attributes.hpp"
 
@@ -55,6 +57,32 @@ void load(ParticleSet& ps, const std::vector<std::size_t>& idx, double fx, doubl
     f[LOAD_X] += fx;
     f[LOAD_Y] += fy;
     f[LOAD_M] += m;
+  }
+}
+
+void loadUniform(ParticleSet& ps, const std::vector<std::size_t>& idx, int axis, double lo,
+                 double hi, double totalFx, double totalFy) {
+  // Layers: particles sharing the other coordinate (to 1e-9 m), each sorted along `axis`.
+  std::map<long long, std::vector<std::size_t>> layers;
+  for (std::size_t k : idx) layers[std::llround(ps.fixedRow(k)[1 - axis] * 1e9)].push_back(k);
+  std::vector<std::pair<std::size_t, double>> share;
+  double total = 0;
+  for (auto& [key, members] : layers) {
+    std::sort(members.begin(), members.end(), [&](std::size_t a, std::size_t b) {
+      return ps.fixedRow(a)[axis] < ps.fixedRow(b)[axis];
+    });
+    for (std::size_t m = 0; m < members.size(); ++m) {
+      const double x = ps.fixedRow(members[m])[axis];
+      const double left = m == 0 ? lo : 0.5 * (x + ps.fixedRow(members[m - 1])[axis]);
+      const double right =
+          m + 1 == members.size() ? hi : 0.5 * (x + ps.fixedRow(members[m + 1])[axis]);
+      share.push_back({members[m], right - left});
+      total += right - left;
+    }
+  }
+  for (const auto& [k, w] : share) {
+    ps.fixedRow(k)[LOAD_X] += totalFx * w / total;
+    ps.fixedRow(k)[LOAD_Y] += totalFy * w / total;
   }
 }
 

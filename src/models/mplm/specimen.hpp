@@ -27,6 +27,12 @@ void constrain(ParticleSet& ps, const std::vector<std::size_t>& idx, int bits,
                std::array<double, 3> peak = {0, 0, 0});
 // Adds a peak external force (and moment) to each particle.
 void load(ParticleSet& ps, const std::vector<std::size_t>& idx, double fx, double fy, double m = 0);
+// Distributes a total force over the particles as a uniform traction would: each gets the
+// share of its tributary length along `axis` (0 = X, 1 = Y) within its layer (particles
+// with equal other coordinate), the layer's ends extended to [lo, hi]. End particles of a
+// layer thus carry less than interior ones, as nodal loads of a uniform traction do.
+void loadUniform(ParticleSet& ps, const std::vector<std::size_t>& idx, int axis, double lo,
+                 double hi, double totalFx, double totalFy);
 void monitor(ParticleSet& ps, const std::vector<std::size_t>& idx);
 
 // Concrete particles only, and extremes of their coordinates.
