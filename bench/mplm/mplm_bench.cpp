@@ -53,6 +53,8 @@ int main(int argc, char** argv) {
   try {
     if (what == "time") {
       const double load = nums.empty() ? 0.5 * ex.thesisMplm : nums[0];
+      opt.holdLength = 1;  // exactly the example's steps, as the thesis ran them
+      opt.holdDamping = 0;
       const auto t0 = std::chrono::steady_clock::now();
       const mplm::Trial tr = mplm::runTrial(ex, load, comm, opt);
       const double secs =

@@ -9,11 +9,18 @@
 namespace pdq::mplm {
 
 struct DamageLaw {
-  double epsT = 1.26e-4;  // ε_t: tensile limit of ε_mp+ (Table 4.2)
-  double alphaT = 10;     // α_t: ε_mp+ = α_t ε_t breaks the interaction
-  double epsC = -1e-3;    // ε_c < 0: compressive limit of ε_mp−
-  double alphaC = 5.728;  // α_c
-  double beta = 0.1;      // β: weight of the curvature in ε_mp± (eqs. 4.11, 4.12)
+  // Calibrated as §4.3.2 prescribes rather than copied from Table 4.2 (1.26e-4, β = 0.1):
+  // ε_t ≈ f_t/E (2.758 MPa / 24.86 GPa) reproduces f_t in uniaxial tension, and β = 0.05
+  // gives the compressive/tensile strength ratio of ~10 β is meant for; with the end
+  // curvatures of eq. 4.10, β = 0.1 gives 5 and halves the beams' strength (docs/mplm.md).
+  double epsT = 1.109e-4;  // ε_t: tensile limit of ε_mp+
+  double alphaT = 10;      // α_t: ε_mp+ = α_t ε_t breaks the interaction
+  double epsC = -1e-3;     // ε_c < 0: compressive limit of ε_mp−
+  double alphaC = 5.728;   // α_c
+  double beta = 0.05;      // β: weight of the curvature in ε_mp± (eqs. 4.11, 4.12)
+  // Eq. 4.20 keeps the axial force of a compressed interaction whatever its damage, so a
+  // lattice loaded along its bonds never crushes; `crushing` lets ω_c reduce it too.
+  bool crushing = false;
 
   // Ω of eqs. 4.13–4.18 for one limit: 0 up to it, 1 from α times it (eps/lim = ratio).
   static double omega(double ratio, double alpha) {

@@ -93,8 +93,10 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const DamageL
       state[0] = omT;
       state[1] = omC;
     }
-    bendKeep = 1 - omega;                    // eqs. 4.19, 4.20: shear and moment always
-    axialKeep = epsA >= 0 ? bendKeep : 1.0;  // axial only in tension (K* in compression)
+    bendKeep = 1 - omega;  // eqs. 4.19, 4.20: shear and moment always
+    // Axial force only in tension (K* in compression), unless crushing is on: then the
+    // compressive damage ω_c also takes the axial force in compression.
+    axialKeep = epsA >= 0 ? bendKeep : (law.crushing ? 1 - omC : 1.0);
   } else if (state && k.kind == Kind::Bar) {
     // Elastic–perfectly plastic axial force: the plastic stretch follows the yield limit.
     double plastic = state[2];

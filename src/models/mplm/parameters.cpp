@@ -36,6 +36,7 @@ void Parameters::read(const Params& p) {
   law.epsC = p.number("compressive_strain", law.epsC, -big, -1e-300);
   law.alphaC = p.number("compressive_ratio", law.alphaC, 1.000001, big);
   law.beta = p.number("beta", law.beta, 0.0, big);
+  law.crushing = p.flag("crushing", law.crushing);
   const double GF = p.number("fracture_energy", 0.0, 0.0, big);
   law.alphaT = p.number("tensile_ratio", law.alphaT, 1.000001, big);
   if (GF > 0) {

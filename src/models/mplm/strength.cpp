@@ -19,8 +19,8 @@ double globalValue(Simulation& sim, const std::vector<std::string>& names,
   return 0;
 }
 
-// Where the broken concrete interactions are: mostly compressive → "compression"; plates
-// otherwise → "tension"; beams → "flexural" when most lie in the middle third of the span,
+// Where the badly damaged (ω ≥ ½) concrete interactions are: mostly compressive → "compression";
+// plates otherwise → "tension"; beams → "flexural" when most lie in the middle third of the span,
 // else "shear".
 std::string failureMode(const Example& ex, Context& ctx) {
   const Particles& P = ctx.particles;
@@ -31,7 +31,7 @@ std::string failureMode(const Example& ex, Context& ctx) {
     if (isSteel(P.fixed(i))) continue;
     for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
       const double* st = B.attr(b);
-      if (std::max(st[OMEGA_T], st[OMEGA_C]) < 1) continue;
+      if (std::max(st[OMEGA_T], st[OMEGA_C]) < 0.5) continue;
       (st[OMEGA_C] >= st[OMEGA_T] ? c : t).add(1);
       all.add(1);
       if (std::fabs(P.fixed(i)[FX_X] - ex.span / 2) < ex.span / 6) m.add(1);
