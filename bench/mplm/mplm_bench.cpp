@@ -101,9 +101,11 @@ int main(int argc, char** argv) {
         for (const auto& tr : st.trials)
           std::printf("  %g %s: %s (u mid/end %.4g/%.4g, broken %g/%g)\n", tr.load, ex.unit.c_str(),
                       tr.holds ? "holds" : "fails", tr.uMid, tr.uEnd, tr.brokenMid, tr.brokenEnd);
-        std::printf("%s: strength in [%g, %g] %s, failure mode %s (thesis MPLM %g, classical %g)\n",
-                    ex.name.c_str(), st.lower, st.upper, ex.unit.c_str(), st.mode.c_str(),
-                    ex.thesisMplm, ex.classical);
+        std::printf(
+            "%s: strength in [%g, %g] %s, failure mode %s (thesis MPLM %g, thesis classical %g, "
+            "ACI/classical here %.4g %s)\n",
+            ex.name.c_str(), st.lower, st.upper, ex.unit.c_str(), st.mode.c_str(), ex.thesisMplm,
+            ex.classical, ex.aci, ex.aciMode.c_str());
       }
     } else {
       throw std::invalid_argument("unknown command " + what);

@@ -94,6 +94,16 @@ TEST(Examples, LoadsSupportsAndBars) {
       EXPECT_EQ(steel.size(), 59u);
       EXPECT_EQ(links.size(), 30u);
     }
+    // ACI 318 of the section (hand calculations in aci318_test.cpp).
+    if (name == "plain_beam") EXPECT_NEAR(ex.aci, 22.169, 0.01);
+    if (name == "rc_beam" || name == "rc_beam_stirrups") {
+      EXPECT_NEAR(ex.aci, 71.93, 0.01) << name;
+      EXPECT_EQ(ex.aciMode, "flexural") << name;
+    }
+    if (name == "rc_beam_shear") {
+      EXPECT_NEAR(ex.aci, 228.64, 0.05);
+      EXPECT_EQ(ex.aciMode, "shear");
+    }
     if (name == "deep_beam") {
       double bars = 0;
       for (std::size_t k : steel) bars = std::max(bars, ps.fixedRow(k)[BAR]);

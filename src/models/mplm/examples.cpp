@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "models/mplm/aci318.hpp"
 #include "models/mplm/attributes.hpp"
 #include "models/mplm/specimen.hpp"
 #include "prep/hexagonal.hpp"
@@ -58,9 +59,13 @@ Example plate(const std::string& orientation, bool compression, bool traction) {
   if (compression) {
     ex.thesisMplm = orientation == "x" ? 28.48 : 61.06;
     ex.classical = 27.58;
+    ex.aci = 27.58;
+    ex.aciMode = "compression";
   } else {
     ex.thesisMplm = orientation == "x" ? 2.784 : 3.226;
     ex.classical = 2.758;
+    ex.aci = 2.758;
+    ex.aciMode = "tension";
   }
   return ex;
 }
@@ -106,6 +111,26 @@ Example beam(const BeamSpec& b) {
   ex.unit = "kN/m";
   ex.beam = true;
   ex.span = b.span;
+  if (b.barDiameter > 0) {
+    aci318::Section sec;
+    sec.b = b.thickness;
+    sec.h = b.depth;
+    sec.d = b.depth - b.barCentroid;
+    sec.As = prep::Bar{0, 0, 0, 0, b.barDiameter}.area();
+    if (b.stirrupDiameter > 0) {
+      sec.Av = prep::Bar{0, 0, 0, 0, b.stirrupDiameter}.area();
+      sec.sv = b.stirrupSpacing;
+    }
+    const aci318::Capacity c = aci318::simplySupportedUniform(sec, b.span);
+    ex.aci = c.governing() / 1e3;
+    ex.aciMode = c.mode();
+  } else {
+    // Classical: the bending stress reaches f_t (§4.4.3).
+    ex.aci = aci318::uniformLoadFromMoment(aci318::crackingMoment(2.758e6, b.thickness, b.depth),
+                                           b.span) /
+             1e3;
+    ex.aciMode = "cracking";
+  }
   return ex;
 }
 

@@ -20,6 +20,8 @@ struct Example {
   double span = 0;        // beams: distance between supports (m)
   double thesisMplm = 0;  // the thesis's MPLM strength, in `unit`
   double classical = 0;   // the thesis's classical / ACI 318 value, in `unit`
+  double aci = 0;         // our ACI 318 (beams) or classical (plates) value, in `unit`
+  std::string aciMode;    // flexural, shear, cracking (plain beam), tension, compression
 };
 
 // Names: tension_x, tension_y, compression_x, compression_y, plain_beam, rc_beam,
