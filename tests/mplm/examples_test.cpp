@@ -95,7 +95,9 @@ TEST(Examples, LoadsSupportsAndBars) {
       EXPECT_EQ(links.size(), 30u);
     }
     // ACI 318 of the section (hand calculations in aci318_test.cpp).
-    if (name == "plain_beam") EXPECT_NEAR(ex.aci, 22.169, 0.01);
+    if (name == "plain_beam") {
+      EXPECT_NEAR(ex.aci, 22.169, 0.01);
+    }
     if (name == "rc_beam" || name == "rc_beam_stirrups") {
       EXPECT_NEAR(ex.aci, 71.93, 0.01) << name;
       EXPECT_EQ(ex.aciMode, "flexural") << name;
