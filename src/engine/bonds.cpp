@@ -21,6 +21,7 @@ void Bonds::finish(std::size_t nOwned) {
   for (std::size_t i = 0; i < nOwned; ++i) start_[i + 1] += start_[i];
   partner_.assign(partnerGid_.size(), -1);
   attr_.assign(partnerGid_.size() * nAttr_, 0.0);
+  dead_.assign(partnerGid_.size(), 0);
   pending_.clear();
   pending_.shrink_to_fit();
 }
@@ -30,6 +31,7 @@ void Bonds::resetEmpty(std::size_t nOwned) {
   partnerGid_.clear();
   partner_.clear();
   attr_.clear();
+  dead_.clear();
 }
 
 void Bonds::permute(const std::vector<std::size_t>& perm) {
@@ -38,19 +40,24 @@ void Bonds::permute(const std::vector<std::size_t>& perm) {
     start[k + 1] = start[k] + (start_[perm[k] + 1] - start_[perm[k]]);
   std::vector<Gid> gids(start.back());
   std::vector<double> attrs(start.back() * nAttr_);
+  std::vector<std::uint8_t> dead(start.back());
   for (std::size_t k = 0; k < perm.size(); ++k) {
     const auto b0 = start_[perm[k]], n = start_[perm[k] + 1] - b0;
     std::copy_n(&partnerGid_[b0], n, &gids[start[k]]);
+    std::copy_n(&dead_[b0], n, &dead[start[k]]);
     if (nAttr_) std::copy_n(&attr_[b0 * nAttr_], n * nAttr_, &attrs[start[k] * nAttr_]);
   }
   start_ = std::move(start);
   partnerGid_ = std::move(gids);
   attr_ = std::move(attrs);
+  dead_ = std::move(dead);
   partner_.assign(partnerGid_.size(), -1);
 }
 
-void Bonds::appendParticle(const Gid* partners, const double* attrs, std::size_t n) {
+void Bonds::appendParticle(const Gid* partners, const double* attrs, const std::uint8_t* dead,
+                           std::size_t n) {
   partnerGid_.insert(partnerGid_.end(), partners, partners + n);
+  dead_.insert(dead_.end(), dead, dead + n);
   attr_.insert(attr_.end(), attrs, attrs + n * nAttr_);
   partner_.resize(partnerGid_.size(), -1);
   start_.push_back(start_.back() + n);

@@ -26,6 +26,12 @@ class Bonds {
   const double* attr(std::size_t b) const { return &attr_[b * nAttr_]; }
   bool empty() const { return partnerGid_.empty(); }
 
+  // A broken bond is killed by its model (on each of its two sides alike); a dead bond
+  // keeps its attributes but no longer needs its partner nearby: partner(b) is -1 once
+  // the partner has left the procCube.
+  bool alive(std::size_t b) const { return dead_[b] == 0; }
+  void kill(std::size_t b) { dead_[b] = 1; }
+
   // --- building, in a model's setup: add pairs, then the engine calls finish() ---
   void add(std::size_t owner, Gid partner);
   // Sorts each owner's bonds by partner ID, rejects duplicates, zeroes attributes.
@@ -36,7 +42,9 @@ class Bonds {
   // New owned particle k takes old particle perm[k]'s bonds (departed ones are dropped).
   void permute(const std::vector<std::size_t>& perm);
   // Appends the bonds of one newly arrived owned particle (at the end of the owned range).
-  void appendParticle(const Gid* partners, const double* attrs, std::size_t n);
+  void appendParticle(const Gid* partners, const double* attrs, const std::uint8_t* dead,
+                      std::size_t n);
+  const std::uint8_t* deadFlags(std::size_t b) const { return &dead_[b]; }
   std::vector<std::int32_t>& partners() { return partner_; }
 
  private:
@@ -45,6 +53,7 @@ class Bonds {
   std::vector<Gid> partnerGid_;
   std::vector<std::int32_t> partner_;
   std::vector<double> attr_;
+  std::vector<std::uint8_t> dead_;
   std::vector<std::pair<std::size_t, Gid>> pending_;
 };
 

@@ -227,6 +227,10 @@ void ProcCube::remapBonds(long step) {
     for (std::size_t b = bonds_.begin(i); b < bonds_.end(i); ++b) {
       const std::size_t h = slot(bonds_.partnerGid(b));
       std::int32_t j = keys[h] == bonds_.partnerGid(b) ? first[h] : -1;
+      if (j < 0 && !bonds_.alive(b)) {
+        partner[b] = -1;
+        continue;
+      }
       if (j < 0) {
         std::ostringstream os;
         os << "step " << step << ": bond partner " << bonds_.partnerGid(b) << " of particle "
@@ -388,6 +392,7 @@ void ProcCube::migrate(long step) {
       for (std::size_t b = bonds_.begin(i); b < bonds_.end(i); ++b)
         putGid(out, bonds_.partnerGid(b));
       if (nb && nB) put(out, bonds_.attr(bonds_.begin(i)), nb * nB);
+      if (nb) put(out, bonds_.deadFlags(bonds_.begin(i)), nb);
     }
     if (keep.size() != p_.owned()) {
       p_.permute(keep);
@@ -403,6 +408,7 @@ void ProcCube::migrate(long step) {
       std::vector<double> f(nF), x(nA), ig(nI);
       std::vector<Gid> pg;
       std::vector<double> ba;
+      std::vector<std::uint8_t> dead;
       while (c < e) {
         Gid id;
         std::uint64_t nb;
@@ -415,10 +421,12 @@ void ProcCube::migrate(long step) {
         ba.resize(nb * nB);
         get(c, pg.data(), nb);
         get(c, ba.data(), nb * nB);
+        dead.resize(nb);
+        get(c, dead.data(), nb);
         const std::size_t k = p_.append(id, f.data(), x.data());
         std::copy_n(ig.data(), nI, p_.integ(k));
         p_.setOwned(p_.local());
-        bonds_.appendParticle(pg.data(), ba.data(), nb);
+        bonds_.appendParticle(pg.data(), ba.data(), dead.data(), nb);
       }
     }
   }

@@ -2,6 +2,7 @@
 // It is the guide to writing a model for pdq — read it top to bottom. Everything a model
 // does is here: parameters, attributes, setup of bonds, force, integration, output.
 // The engine owns everything else (decomposition, ghosts, exchange, shuffle, files).
+#include <algorithm>
 #include <cmath>
 
 #include "engine/model.hpp"
@@ -14,7 +15,7 @@ class Spring final : public Model {
   //    model's own columns start at 3. Naming them keeps the kernels readable.
   enum Alter { X = 0, Y, Z, VX, VY, VZ };  // current position, velocity
   enum Integ { FX = 0, FY, FZ };           // force: scratch, recomputed every step
-  enum BondAttr { BROKEN = 0 };            // 1 once the spring has snapped (never heals)
+  enum BondAttr { MAX_STRETCH = 0 };       // the largest stretch the spring has seen
 
  public:
   // 2. Parameters, from the scenario's [model] table or pdQUserInput.dat. Every key read
@@ -31,7 +32,7 @@ class Spring final : public Model {
 
   // 3. The attributes the engine stores, sends and writes for this model.
   Schema schema() const override {
-    return Schema::make({}, {"vx", "vy", "vz"}, {"fx", "fy", "fz"}, {"broken"});
+    return Schema::make({}, {"vx", "vy", "vz"}, {"fx", "fy", "fz"}, {"max_stretch"});
   }
   double horizon() const override { return horizon_; }
   // A spring lattice keeps its neighbours; `shuffle = true` lets particles migrate anyway
@@ -67,8 +68,7 @@ class Spring final : public Model {
       const double* Xi = P.fixed(i);
       double f[3] = {0, 0, 0};
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        double* state = B.attr(b);
-        if (state[BROKEN] != 0) continue;
+        if (!B.alive(b)) continue;  // snapped: never heals
         const std::size_t j = B.partner(b);
         const double* xj = P.alter(j);
         const double* Xj = P.fixed(j);
@@ -76,8 +76,10 @@ class Spring final : public Model {
         const double len = std::sqrt(sq(r[0]) + sq(r[1]) + sq(r[2]));
         const double len0 = std::sqrt(sq(Xj[0] - Xi[0]) + sq(Xj[1] - Xi[1]) + sq(Xj[2] - Xi[2]));
         const double stretch = (len - len0) / len0;
+        double* state = B.attr(b);
+        state[MAX_STRETCH] = std::max(state[MAX_STRETCH], stretch);
         if (breakStretch_ > 0 && stretch > breakStretch_) {
-          state[BROKEN] = 1;  // each side of a bond judges it alike, from the same numbers
+          B.kill(b);  // both sides of the bond judge alike, from the same numbers
           continue;
         }
         const double t = k_ * (len - len0) / len;
@@ -118,7 +120,7 @@ class Spring final : public Model {
     for (std::size_t i = 0; i < out.size(); ++i) {
       const std::size_t n = B.end(i) - B.begin(i);
       double broken = 0;
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b) broken += B.attr(b)[BROKEN];
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) broken += B.alive(b) ? 0 : 1;
       out[i] = n ? broken / n : 0.0;
     }
   }
@@ -132,7 +134,7 @@ class Spring final : public Model {
     const double broken = ctx.sumOwned([&](std::size_t i) {
       double s = 0;
       for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b)
-        s += ctx.bonds.attr(b)[BROKEN];
+        s += ctx.bonds.alive(b) ? 0 : 1;
       return s;
     });
     return {ke, broken / 2};

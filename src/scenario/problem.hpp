@@ -1,0 +1,35 @@
+#pragma once
+// A problem ready to run: which model with which parameters, every particle, the engine's
+// run configuration and the outputs wanted. Both input forms produce one: the thesis's
+// .dat files (io/thesis_input.hpp) and TOML scenario files (scenario/scenario.hpp).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/model.hpp"
+#include "engine/params.hpp"
+#include "engine/particle_set.hpp"
+#include "engine/simulation.hpp"
+
+namespace pdq {
+
+struct OutputSettings {
+  long restartEvery = 0;            // ParticleAlterAttrs.<step>.rst (+ Bonds.<step>.rst)
+  bool finalRestart = true;         // also at the last step
+  long historyEvery = 0;            // timehist.dat rows for historyIds
+  std::vector<Gid> historyIds;
+  long globalsEvery = 0;            // history.csv: the model's global values
+  std::unique_ptr<Params> paraview; // [output.paraview] table, if any (io/vtu_output.hpp)
+  std::unique_ptr<Params> picture;  // [output.picture] table, if any (post/picture_output.hpp)
+};
+
+struct Problem {
+  std::string source;  // the scenario or input file, for messages
+  std::string modelName;
+  std::unique_ptr<Model> model;  // created and configured
+  ParticleSet particles;
+  RunConfig run;
+  OutputSettings output;
+};
+
+}  // namespace pdq

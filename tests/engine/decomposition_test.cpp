@@ -1,0 +1,57 @@
+#include <gtest/gtest.h>
+
+#include "engine/decomposition.hpp"
+#include "engine/error.hpp"
+
+namespace pdq {
+namespace {
+
+Domain box(double lx, double ly, double lz, int dim) {
+  Domain d;
+  d.hi = {lx, ly, lz};
+  d.dim = dim;
+  return d;
+}
+
+TEST(Decomposition, CoresAreBlocksOfTheGlobalCellLattice) {
+  const Domain d = box(10, 4, 1, 2);
+  int covered = 0;
+  for (int r = 0; r < 3; ++r) {
+    Decomposition dec(d, 1.0, {3, 1, 1}, 3, r);
+    EXPECT_EQ(dec.globalCells(0), 10);
+    EXPECT_EQ(dec.globalCells(2), 1);  // 2D: one cell layer in Z
+    covered += dec.coreCells(0);
+    for (int g = dec.coreLo(0); g < dec.coreHi(0); ++g) EXPECT_EQ(dec.ownerCoord(0, g), r);
+  }
+  EXPECT_EQ(covered, 10);
+}
+
+TEST(Decomposition, AutomaticGridCutsTheLongAxis) {
+  Decomposition dec(box(40, 5, 5, 3), 1.0, {0, 0, 0}, 4, 0);
+  EXPECT_EQ(dec.procs(0), 4);
+  EXPECT_EQ(dec.procs(1), 1);
+}
+
+TEST(Decomposition, NeighboursAndPeriodicWrap) {
+  Domain d = box(9, 9, 9, 3);
+  d.periodic = {true, false, false};
+  Decomposition left(d, 1.0, {2, 1, 1}, 2, 0);
+  EXPECT_EQ(left.neighbour(0, -1), 1);
+  EXPECT_TRUE(left.wraps(0, -1));
+  EXPECT_EQ(left.neighbour(1, +1), -1);
+  Decomposition self(d, 1.0, {1, 1, 1}, 1, 0);
+  EXPECT_EQ(self.neighbour(0, +1), 0);  // one rank owns both sides of the periodic axis
+}
+
+TEST(Decomposition, TooManyRanksIsAClearError) {
+  try {
+    Decomposition dec(box(3, 3, 3, 3), 1.0, {4, 1, 1}, 4, 0, "pdQInput.dat");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("only 3 cells"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(Decomposition(box(3, 3, 3, 3), 1.0, {2, 1, 1}, 4, 0), InputError);
+}
+
+}  // namespace
+}  // namespace pdq
