@@ -1,0 +1,47 @@
+#pragma once
+// The attributes of an MPLM particle and interaction, shared by the model and the
+// generators that fill a ParticleSet for it (src/prep/hexagonal, src/prep/rebar).
+#include "engine/schema.hpp"
+
+namespace pdq::mplm {
+
+// Fixed attributes (never change; sent only when a ghost is created).
+enum Fixed {
+  FX_X = 0,
+  FX_Y,
+  FX_Z,           // reference position
+  MATERIAL,       // Material below
+  BAR,            // steel: which bar (particles of different bars never interact)
+  LINK,           // steel: 1 if bonded to the concrete around it (every other one)
+  AREA,           // steel: bar cross-section A_s (m²)
+  SECOND_MOMENT,  // steel: bar I_s (m⁴)
+  CONSTRAINT,     // bit mask of prescribed DOFs: 1 = u_x, 2 = u_y, 4 = θ_z
+  LOAD_X,
+  LOAD_Y,
+  LOAD_M,  // peak external force (N) and moment (N·m) on the particle
+  DISP_X,
+  DISP_Y,
+  DISP_T,   // peak prescribed displacement/rotation of constrained DOFs
+  MONITOR,  // 1: part of the displacement reported in the history
+  N_FIXED
+};
+// Alterable attributes: everything a neighbour reads (damping needs the velocities).
+enum Alter { AX = 0, AY, AZ, VX, VY, THETA, OMEGA, N_ALTER };
+// Per-step scratch of owned particles.
+enum Integ { FORCE_X = 0, FORCE_Y, MOMENT, N_INTEG };
+// Per-interaction state (each interaction is stored on both particles and evolves alike).
+enum BondAttr { OMEGA_T = 0, OMEGA_C, PLASTIC, N_BOND };
+
+enum Material { CONCRETE = 0, STEEL = 1 };
+enum Constraint { FIX_X = 1, FIX_Y = 2, FIX_T = 4 };
+
+inline bool isSteel(const double* fixedRow) { return fixedRow[MATERIAL] == double(STEEL); }
+
+inline Schema schema() {
+  return Schema::make({"material", "bar", "link", "area", "second_moment", "constraint", "load_x",
+                       "load_y", "load_m", "disp_x", "disp_y", "disp_t", "monitor"},
+                      {"vx", "vy", "theta", "omega"}, {"fx", "fy", "mz"},
+                      {"omega_t", "omega_c", "plastic"});
+}
+
+}  // namespace pdq::mplm

@@ -1,0 +1,362 @@
+// The micropolar peridynamic lattice model in 2D (thesis chapter 4), registered as
+// "mplm2d": particles on a hexagonal lattice with DOFs u_x, u_y, θ_z, interacting with
+// their six nearest neighbours through the beam-like stiffness of eq. 4.3, damaged by the
+// laws of §4.3.2, damped by eq. 4.21, reinforced by steel bars (§4.3.4), and integrated by
+// velocity Verlet in its leapfrog form. Loads ramp linearly to a fraction of the run and
+// are then held (§4.4).
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <numbers>
+
+#include "engine/error.hpp"
+#include "engine/model.hpp"
+#include "models/mplm/attributes.hpp"
+#include "models/mplm/frequency.hpp"
+#include "models/mplm/interaction.hpp"
+#include "models/mplm/parameters.hpp"
+
+namespace pdq::mplm {
+namespace {
+
+class Mplm2d final : public Model {
+ public:
+  void configure(const Params& p) override { par_.read(p); }
+  Schema schema() const override { return mplm::schema(); }
+  double horizon() const override { return par_.horizon(); }
+
+  // Interactions in the reference configuration: concrete–concrete within δ; steel–steel
+  // of the same bar within s; a linking steel particle with concrete within s (not at
+  // distance zero).
+  void setup(Context& ctx) override {
+    if (ctx.dim() != 2) throw InputError("mplm2d", 0, "mplm2d needs a 2D problem (all Z equal)");
+    Particles& P = ctx.particles;
+    for (std::size_t i = 0; i < P.owned(); ++i)
+      ctx.forEachNearby(i, [&](std::size_t j) {
+        if (j != i && interacts(P.fixed(i), P.fixed(j))) ctx.bonds.add(i, P.gid(j));
+      });
+    if (par_.dt > 0) ctx.setDt(par_.dt);
+  }
+
+  void prepare(Context& ctx) override {
+    Particles& P = ctx.particles;
+    const std::size_t n = P.owned();
+    in_.mass.resize(n);
+    in_.inertia.resize(n);
+    in_.constraint.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      in_.mass[i] = massOf(P.fixed(i));
+      in_.inertia[i] = Parameters::rotationalInertia(in_.mass[i], par_.s);
+      in_.constraint[i] = static_cast<int>(P.fixed(i)[CONSTRAINT]);
+    }
+    inter_.resize(ctx.bonds.count());
+    double omegaBond = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
+        inter_[b] = makeInteraction(P, i, static_cast<std::size_t>(ctx.bonds.partner(b)));
+        omegaBond = std::max(omegaBond, std::sqrt(inter_[b].ka / massOf(P.fixed(i))));
+      }
+    omegaMax_ = highestFrequency(ctx, inter_, in_, par_.powerIterations);
+    const double c0 = std::sqrt(par_.E / par_.rho);
+    const double thesisDt = par_.s / (std::numbers::pi * c0);
+    // A mode at ω_max sees about ζ ω_max / ω_bond of critical damping from eq. 4.21.
+    omegaBond = ctx.max(omegaBond);
+    const double zm = std::max(par_.zeta, par_.zetaRotation) * omegaMax_ / omegaBond;
+    const double stable = 2 / omegaMax_ * (std::sqrt(1 + zm * zm) - zm);
+    if (!(par_.dt > 0)) ctx.setDt(par_.dtSafety * stable);
+    if (ctx.root())
+      ctx.log() << std::setprecision(4) << "mplm2d: highest frequency " << omegaMax_
+                << " rad/s, stable dt " << stable << " s, s/(pi c0) = " << thesisDt
+                << " s, using dt " << ctx.dt() << " s\n";
+  }
+
+  void force(Context& ctx) override {
+    Particles& P = ctx.particles;
+    Bonds& B = ctx.bonds;
+    const bool corot = par_.kinematics == "corotational";
+    const long n = static_cast<long>(P.owned());
+    if (corot) turnings(P);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      const double* a = P.alter(i);
+      double fx = 0, fy = 0, m = 0;
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const Interaction& k = inter_[b];
+        const double* aj = P.alter(k.j);
+        const double rx = aj[AX] - a[AX], ry = aj[AY] - a[AY];
+        const Chord ch = corot ? corotChord(k, rx, ry, cs_[2 * i], cs_[2 * i + 1], cs_[2 * k.j],
+                                            cs_[2 * k.j + 1])
+                               : smallChord(k, rx - k.r0x, ry - k.r0y, a[THETA], aj[THETA]);
+        const EndLoad e = elasticForce(k, ch, par_.law, B.attr(b), true);
+        fx += e.fx + e.keep * k.c * (aj[VX] - a[VX]);
+        fy += e.fy + e.keep * k.c * (aj[VY] - a[VY]);
+        m += e.m + e.keep * k.cr * (aj[OMEGA] - a[OMEGA]);
+      }
+      double* F = P.integ(i);
+      F[FORCE_X] = fx;
+      F[FORCE_Y] = fy;
+      F[MOMENT] = m;
+    }
+  }
+
+  // Leapfrog: v(n+½) = v(n−½) + a(n) Δt, x(n+1) = x(n) + v(n+½) Δt, for translations and
+  // rotations alike. Constrained DOFs follow their prescribed (ramped) values.
+  void integrate(Context& ctx) override {
+    Particles& P = ctx.particles;
+    const double h = ctx.dt();
+    const double loadNow = par_.loadScale * ramp(ctx, ctx.step() - 1);
+    const double dispNext = par_.loadScale * ramp(ctx, ctx.step());
+    const bool held = ramp(ctx, ctx.step() - 1) >= 1;
+    if (held && par_.holdDampingRatio > 0 && holdViscous_ < 0) holdViscous_ = holdDamping(ctx);
+    const double viscous = par_.viscous + (held && holdViscous_ > 0 ? holdViscous_ : 0.0);
+    const long n = static_cast<long>(P.owned());
+    constexpr int pos[3] = {AX, AY, THETA}, vel[3] = {VX, VY, OMEGA};
+    constexpr int bit[3] = {FIX_X, FIX_Y, FIX_T};
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      double* a = P.alter(i);
+      const double* X = P.fixed(i);
+      const double* F = P.integ(i);
+      const double inv[3] = {1 / in_.mass[i], 1 / in_.mass[i], 1 / in_.inertia[i]};
+      const double ref[3] = {X[FX_X], X[FX_Y], 0.0};
+      for (int d = 0; d < 3; ++d) {
+        if (in_.constraint[i] & bit[d]) {
+          const double target = ref[d] + X[DISP_X + d] * dispNext;
+          a[vel[d]] = (target - a[pos[d]]) / h;
+          a[pos[d]] = target;
+        } else {
+          const double acc = (F[d] + X[LOAD_X + d] * loadNow) * inv[d] - viscous * a[vel[d]];
+          a[vel[d]] += acc * h;
+          a[pos[d]] += a[vel[d]] * h;
+        }
+      }
+    }
+  }
+
+  std::vector<std::string> fields() const override {
+    return {"damage", "omega_t", "omega_c", "ux", "uy", "theta", "sxx", "syy", "sxy"};
+  }
+  void field(const Context& ctx, int k, std::span<double> out) const override {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const double* a = P.alter(i);
+      const double* X = P.fixed(i);
+      double v = 0;
+      switch (k) {
+        case 0:
+        case 1:
+        case 2:
+          for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+            const double* s = B.attr(b);
+            v = std::max(v, k == 0 ? std::max(s[OMEGA_T], s[OMEGA_C]) : s[k - 1]);
+          }
+          break;
+        case 3:
+          v = a[AX] - X[FX_X];
+          break;
+        case 4:
+          v = a[AY] - X[FX_Y];
+          break;
+        case 5:
+          v = a[THETA];
+          break;
+        default:
+          v = stress(ctx, i)[k - 6];
+      }
+      out[i] = v;
+    }
+  }
+
+  std::vector<std::string> globals() const override {
+    return {"load_factor", "load_x",     "load_y",  "ux",      "uy",
+            "reaction_x",  "reaction_y", "kinetic", "damaged", "broken"};
+  }
+  std::vector<double> globalValues(Context& ctx) override {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    const double lf = par_.loadScale * ramp(ctx, ctx.step());
+    auto sum = [&](auto f) { return ctx.sumOwned(f); };
+    const double lx = lf * sum([&](std::size_t i) { return P.fixed(i)[LOAD_X]; });
+    const double ly = lf * sum([&](std::size_t i) { return P.fixed(i)[LOAD_Y]; });
+    const double nMon = sum([&](std::size_t i) { return P.fixed(i)[MONITOR]; });
+    auto monitored = [&](std::size_t i, double v) { return P.fixed(i)[MONITOR] != 0 ? v : 0.0; };
+    const double ux =
+        sum([&](std::size_t i) { return monitored(i, P.alter(i)[AX] - P.fixed(i)[FX_X]); });
+    const double uy =
+        sum([&](std::size_t i) { return monitored(i, P.alter(i)[AY] - P.fixed(i)[FX_Y]); });
+    auto reaction = [&](std::size_t i, int d, int bit) {
+      return (in_.constraint[i] & bit) ? monitored(i, -P.integ(i)[d]) : 0.0;
+    };
+    const double rx = sum([&](std::size_t i) { return reaction(i, FORCE_X, FIX_X); });
+    const double ry = sum([&](std::size_t i) { return reaction(i, FORCE_Y, FIX_Y); });
+    const double ke = sum([&](std::size_t i) {
+      const double* a = P.alter(i);
+      return 0.5 * in_.mass[i] * (a[VX] * a[VX] + a[VY] * a[VY]) +
+             0.5 * in_.inertia[i] * a[OMEGA] * a[OMEGA];
+    });
+    auto countBonds = [&](double threshold) {
+      return sum([&](std::size_t i) {
+               double c = 0;
+               for (std::size_t b = B.begin(i); b < B.end(i); ++b)
+                 if (std::max(B.attr(b)[OMEGA_T], B.attr(b)[OMEGA_C]) >= threshold) c += 1;
+               return c;
+             }) /
+             2;
+    };
+    const double mean = nMon > 0 ? 1 / nMon : 0.0;
+    return {lf,
+            lx,
+            ly,
+            ux * mean,
+            uy * mean,
+            rx,
+            ry,
+            ke,
+            countBonds(std::numeric_limits<double>::min()),
+            countBonds(1.0)};
+  }
+
+ private:
+  double massOf(const double* f) const {
+    return isSteel(f) ? par_.steelMass(f[AREA]) : par_.concreteMass();
+  }
+  bool interacts(const double* fi, const double* fj) const {
+    const double dx = fj[FX_X] - fi[FX_X], dy = fj[FX_Y] - fi[FX_Y];
+    const double d = std::sqrt(dx * dx + dy * dy);
+    const double within = par_.s * (1 + 1e-6);
+    const bool si = isSteel(fi), sj = isSteel(fj);
+    if (!si && !sj) return d <= par_.horizon();
+    if (si && sj) return fi[BAR] == fj[BAR] && d <= within;
+    const double* steel = si ? fi : fj;
+    return steel[LINK] != 0 && d > 0 && d <= within;
+  }
+
+  Interaction makeInteraction(const Particles& P, std::size_t i, std::size_t j) const {
+    const double* fi = P.fixed(i);
+    const double* fj = P.fixed(j);
+    Interaction k;
+    k.j = static_cast<std::int32_t>(j);
+    k.r0x = fj[FX_X] - fi[FX_X];
+    k.r0y = fj[FX_Y] - fi[FX_Y];
+    k.L0 = std::sqrt(k.r0x * k.r0x + k.r0y * k.r0y);
+    k.invL0 = 1 / k.L0;
+    k.n0x = k.r0x / k.L0;
+    k.n0y = k.r0y / k.L0;
+    const bool si = isSteel(fi), sj = isSteel(fj);
+    const double a = par_.concrete.a, b = par_.concrete.b, s = par_.s, L = k.L0;
+    if (si && sj) {
+      k.kind = Kind::Bar;
+      k.ka = par_.steelE * fi[AREA] / L;
+      k.kb = par_.steelE * fi[SECOND_MOMENT] / L;
+      k.epsY = par_.steelYield;
+    } else if (si || sj) {
+      // Steel–concrete links never damage (§4.4). "concrete": the translational stiffness
+      // of a concrete interaction (a/s axially, 12b/s³ across) whatever the distance, so a
+      // short link does not stiffen the lattice; "length": eq. 4.3 with the actual length.
+      k.kind = Kind::Elastic;
+      const bool likeConcrete = par_.link == "concrete";
+      k.ka = likeConcrete ? a / s : a / L;
+      k.kb = likeConcrete ? b * L * L / (s * s * s) : b / L;
+    } else {
+      k.kind = par_.damage ? Kind::Concrete : Kind::Elastic;
+      k.ka = a / L;
+      k.kb = b / L;
+    }
+    // Eq. 4.21 with ω_n = √(k/m) of the interaction: c = 2ζ √(k m), m the pair's
+    // harmonic mean mass (the particle mass for like particles); likewise for rotation.
+    const double mi = massOf(fi), mj = massOf(fj);
+    const double m = 2 * mi * mj / (mi + mj);
+    const double I = Parameters::rotationalInertia(m, s);
+    k.c = 2 * par_.zeta * std::sqrt(k.ka * m);
+    k.cr = 2 * par_.zetaRotation * std::sqrt(4 * k.kb * I);
+    return k;
+  }
+
+  // 2 ζ_h ω₁, ω₁² = F·u / (u·M·u) the Rayleigh quotient of the current deflection under
+  // the held loads (close to static by the end of a slow ramp); 0 without loads.
+  double holdDamping(Context& ctx) const {
+    const Particles& P = ctx.particles;
+    const double scale = par_.loadScale;
+    const double work = ctx.sumOwned([&](std::size_t i) {
+      const double* X = P.fixed(i);
+      const double* a = P.alter(i);
+      return scale *
+             (X[LOAD_X] * (a[AX] - X[FX_X]) + X[LOAD_Y] * (a[AY] - X[FX_Y]) + X[LOAD_M] * a[THETA]);
+    });
+    const double inertia = ctx.sumOwned([&](std::size_t i) {
+      const double* X = P.fixed(i);
+      const double* a = P.alter(i);
+      const double ux = a[AX] - X[FX_X], uy = a[AY] - X[FX_Y];
+      return in_.mass[i] * (ux * ux + uy * uy) + in_.inertia[i] * a[THETA] * a[THETA];
+    });
+    if (!(work > 0 && inertia > 0)) return 0;
+    const double omega1 = std::sqrt(work / inertia);
+    if (ctx.root())
+      ctx.log() << "mplm2d: loads held from step " << ctx.step() << "; Rayleigh frequency "
+                << omega1 << " rad/s, hold damping " << 2 * par_.holdDampingRatio * omega1
+                << " 1/s\n";
+    return 2 * par_.holdDampingRatio * omega1;
+  }
+
+  // cos θ and sin θ of every local particle (owned and ghosts), once per step.
+  void turnings(const Particles& P) {
+    const long nl = static_cast<long>(P.local());
+    cs_.resize(2 * P.local());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < nl; ++i) {
+      const double th = P.alter(i)[THETA];
+      cs_[2 * i] = std::cos(th);
+      cs_[2 * i + 1] = std::sin(th);
+    }
+  }
+
+  // Load factor at a step: linear up to rampFraction of the run, then held.
+  double ramp(const Context& ctx, long step) const {
+    const double rampSteps = par_.rampFraction * static_cast<double>(ctx.steps());
+    if (!(rampSteps > 0)) return 1.0;
+    return std::min(1.0, static_cast<double>(step) / rampSteps);
+  }
+
+  // Virial stress of particle i from its elastic interactions (no damping):
+  // σ = (1/2ΔV) Σ_j r_ij ⊗ f_ij, symmetrised; ΔV the particle's volume.
+  std::array<double, 3> stress(const Context& ctx, std::size_t i) const {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    const bool corot = par_.kinematics == "corotational";
+    const double* a = P.alter(i);
+    double sxx = 0, syy = 0, sxy = 0;
+    for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+      const Interaction& k = inter_[b];
+      const double* aj = P.alter(k.j);
+      const double rx = aj[AX] - a[AX], ry = aj[AY] - a[AY];
+      const Chord ch = corot ? corotChord(k, rx, ry, std::cos(a[THETA]), std::sin(a[THETA]),
+                                          std::cos(aj[THETA]), std::sin(aj[THETA]))
+                             : smallChord(k, rx - k.r0x, ry - k.r0y, a[THETA], aj[THETA]);
+      double state[N_BOND];
+      std::copy_n(B.attr(b), N_BOND, state);
+      const EndLoad e = elasticForce(k, ch, par_.law, state, false);
+      sxx += rx * e.fx;
+      syy += ry * e.fy;
+      sxy += 0.5 * (rx * e.fy + ry * e.fx);
+    }
+    const double V = isSteel(P.fixed(i)) ? P.fixed(i)[AREA] * par_.s
+                                         : std::sqrt(3.0) / 2 * par_.s * par_.s * par_.thickness;
+    return {sxx / (2 * V), syy / (2 * V), sxy / (2 * V)};
+  }
+
+  Parameters par_;
+  std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
+  std::vector<double> cs_;          // cos θ, sin θ per local particle (co-rotational form)
+  Inertia in_;
+  double omegaMax_ = 0;
+  double holdViscous_ = -1;  // hold-phase damping, once computed
+};
+
+PDQ_REGISTER_MODEL(Mplm2d, "mplm2d",
+                   "micropolar peridynamic lattice model, 2D: concrete with damage, steel bars");
+
+}  // namespace
+}  // namespace pdq::mplm

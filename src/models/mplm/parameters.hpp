@@ -1,0 +1,48 @@
+#pragma once
+// Every MPLM parameter with its documented default (thesis Tables 4.1–4.3 where it gives
+// one; docs/mplm.md lists them all).
+#include <string>
+
+#include "engine/params.hpp"
+#include "models/mplm/damage.hpp"
+#include "models/mplm/elastic_constants.hpp"
+
+namespace pdq::mplm {
+
+struct Parameters {
+  // Lattice and concrete
+  double s = 0.02;             // spacing (m)
+  double horizonFactor = 1.5;  // δ = 1.5 s: six neighbours
+  double thickness = 0.12;     // t (m)
+  double E = 24.86e9, nu = 0.2, rho = 2323;
+  std::string elasticity = "plane_stress";  // plane_stress | plane_strain | given
+  ElasticConstants concrete;                // a, b in use
+  std::string kinematics = "corotational";  // corotational | small
+  // Damage
+  bool damage = true;
+  DamageLaw law;
+  // Steel (Table 4.3)
+  double steelE = 200e9, steelRho = 7850, steelYield = 0.00207;
+  std::string link = "concrete";  // concrete: link = concrete interaction's stiffness; length
+  // Damping (eq. 4.21) and time stepping
+  double zeta = 0.05;          // ζ of relative translational velocity
+  double zetaRotation = 0.05;  // ζ of relative angular velocity
+  double viscous = 0;          // mass-proportional damping c/m (1/s), dynamic relaxation
+  // Once the loads are held, mass-proportional damping 2 ζ_h ω₁ with ω₁ the Rayleigh
+  // frequency of the deflected shape (strength search: lets a structure that stands settle).
+  double holdDampingRatio = 0;
+  double dt = 0;  // 0: from the highest frequency
+  double dtSafety = 0.9;
+  int powerIterations = 60;
+  // Loading
+  double rampFraction = 0.75;  // loads ramp linearly to this fraction of the run, then hold
+  double loadScale = 1;        // multiplies every load and prescribed displacement
+
+  void read(const Params& p);
+  double horizon() const { return horizonFactor * s; }
+  double concreteMass() const;          // ρ (√3/2) s² t
+  double steelMass(double area) const;  // ρ_s A_s s
+  static double rotationalInertia(double m, double s) { return m * s * s / 10; }  // r = s/2
+};
+
+}  // namespace pdq::mplm

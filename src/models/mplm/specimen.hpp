@@ -1,0 +1,43 @@
+#pragma once
+// Building blocks for MPLM problems: concrete lattices, steel bars, supports, loads and
+// monitored particles written into the fixed attributes of a ParticleSet.
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "engine/particle_set.hpp"
+#include "prep/rebar.hpp"
+
+namespace pdq::mplm {
+
+// An empty set in the MPLM attribute widths.
+ParticleSet newParticleSet();
+
+// Appends concrete particles at the points (global IDs continue from the set's size).
+void addConcrete(ParticleSet& ps, const std::vector<std::array<double, 2>>& points);
+// Appends a bar's steel particles; every other one (the first included) links to concrete.
+void addBar(ParticleSet& ps, const prep::Bar& bar, double s, int barId);
+
+// Indices of the particles whose fixed row satisfies `pick`.
+std::vector<std::size_t> select(const ParticleSet& ps,
+                                const std::function<bool(const double*)>& pick);
+
+// Constrains DOFs (Constraint bits) of the particles, with prescribed peak values.
+void constrain(ParticleSet& ps, const std::vector<std::size_t>& idx, int bits,
+               std::array<double, 3> peak = {0, 0, 0});
+// Adds a peak external force (and moment) to each particle.
+void load(ParticleSet& ps, const std::vector<std::size_t>& idx, double fx, double fy, double m = 0);
+// Distributes a total force over the particles as a uniform traction would: each gets the
+// share of its tributary length along `axis` (0 = X, 1 = Y) within its layer (particles
+// with equal other coordinate), the layer's ends extended to [lo, hi]. End particles of a
+// layer thus carry less than interior ones, as nodal loads of a uniform traction do.
+void loadUniform(ParticleSet& ps, const std::vector<std::size_t>& idx, int axis, double lo,
+                 double hi, double totalFx, double totalFy);
+void monitor(ParticleSet& ps, const std::vector<std::size_t>& idx);
+
+// Concrete particles only, and extremes of their coordinates.
+bool isConcrete(const double* fixedRow);
+double minCoord(const ParticleSet& ps, int axis);
+double maxCoord(const ParticleSet& ps, int axis);
+
+}  // namespace pdq::mplm

@@ -1,0 +1,63 @@
+#pragma once
+// Strength as the thesis defines it (§4.4): "the peak load at which static equilibrium
+// can still be achieved". A trial runs the example with its loads ramped to a peak over
+// rampFraction of the run and then held, with extra damping in the hold so that a structure
+// that can stand comes to rest; equilibrium holds when, in the second half of the hold,
+// hardly any more interactions break and the monitored displacement changes by at most
+// `settle`. Bisection
+// over the peak brackets the strength.
+#include <string>
+#include <vector>
+
+#include "engine/comm.hpp"
+#include "models/mplm/examples.hpp"
+
+namespace pdq::mplm {
+
+struct StrengthOptions {
+  double settle = 0.02;  // allowed |u(end) − u(mid hold)| / |u(mid hold)|
+  double runaway = 50;   // stop a trial once |u| exceeds this × |u| at the start of the hold
+  double relTol = 0.02;  // bisection stops when (hi − lo) ≤ relTol · lo
+  int maxTrials = 16;
+  // Run the example's simulated time with the stable time step of the lattice instead of
+  // its own (the thesis's Δt is ~14 times smaller than needed for the beams).
+  bool stableStep = false;
+  // Critical-damping ratio of the fundamental mode added once the loads are held (model
+  // parameter hold_damping_ratio): a structure that can stand comes to rest, one that
+  // cannot keeps moving and breaking.
+  double holdDamping = 1;
+  // The hold phase is this many times the example's (its ramp unchanged), so that the
+  // structure has time to settle.
+  double holdLength = 3;
+  // Interactions that may still break in the second half of the hold, as a fraction of
+  // all broken ones (plus one): isolated late breaks do not make a structure fail.
+  double lateBreaks = 0.05;
+  std::map<std::string, std::string> overrides;  // extra model parameters
+};
+
+struct Trial {
+  double load = 0;
+  bool holds = false;
+  double uHold = 0, uMid = 0, uEnd = 0;  // monitored displacement: hold start, mid, end
+  double uPeak = 0;                      // its largest value in the first half of the hold
+  double brokenMid = 0, brokenEnd = 0;   // broken interactions
+  long steps = 0;                        // steps run (fewer when stopped as runaway)
+  std::string mode;                      // failure mode judged from the damage
+  std::string log;                       // the run's start-up log (time step, ...)
+};
+
+struct Strength {
+  double lower = 0, upper = 0;  // holds at `lower`, fails at `upper`
+  std::string mode;             // judged at the lowest failing trial
+  std::vector<Trial> trials;
+};
+
+// One trial at peak load `load` (in the example's unit).
+Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions& opt = {});
+
+// Bisection between a load that holds (lo) and one that fails (hi); the bracket is first
+// widened (lo halved, hi doubled) until it is one.
+Strength findStrength(const Example& ex, double lo, double hi, Comm& comm,
+                      const StrengthOptions& opt = {});
+
+}  // namespace pdq::mplm

@@ -1,0 +1,118 @@
+// The generators: hexagonal lattices, bars, and the thesis's examples built from them.
+#include "models/mplm/examples.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "models/mplm/attributes.hpp"
+#include "models/mplm/specimen.hpp"
+#include "prep/hexagonal.hpp"
+#include "prep/rebar.hpp"
+
+namespace pdq::mplm {
+namespace {
+
+constexpr double s = 0.02;
+
+int neighboursWithin(const std::vector<std::array<double, 2>>& pts, std::size_t i, double r) {
+  int n = 0;
+  for (std::size_t j = 0; j < pts.size(); ++j)
+    if (j != i && std::hypot(pts[j][0] - pts[i][0], pts[j][1] - pts[i][1]) <= r) ++n;
+  return n;
+}
+
+TEST(Hexagonal, SixNeighboursAtSpacingInBothOrientations) {
+  for (auto o : {prep::HexOrientation::BondsAlongX, prep::HexOrientation::BondsAlongY}) {
+    const auto pts = prep::hexagonalRectangle(0.2, 0.2, s, o);
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      const double x = pts[i][0], y = pts[i][1];
+      EXPECT_TRUE(x >= 0 && x <= 0.2 + 1e-12 && y >= 0 && y <= 0.2 + 1e-12);
+      if (x > 2 * s && x < 0.2 - 2 * s && y > 2 * s && y < 0.2 - 2 * s) {
+        EXPECT_EQ(neighboursWithin(pts, i, 1.0001 * s), 6);
+        EXPECT_EQ(neighboursWithin(pts, i, 1.5 * s), 6);  // δ = 1.5 s: no second ring
+        EXPECT_EQ(neighboursWithin(pts, i, 0.9999 * s), 0);
+      }
+    }
+  }
+  // Bonds along X: a row of 11 particles from 0 to 0.2; along Y: a column likewise.
+  const auto row = prep::hexagonalRectangle(0.2, 0, s, prep::HexOrientation::BondsAlongX);
+  EXPECT_EQ(row.size(), 11u);
+  const auto col = prep::hexagonalRectangle(0, 0.2, s, prep::HexOrientation::BondsAlongY);
+  EXPECT_EQ(col.size(), 11u);
+  EXPECT_DOUBLE_EQ(col.back()[1], 0.2);
+}
+
+TEST(Rebar, BarsAndStirrups) {
+  const prep::Bar bar = prep::longitudinalBar(0, 1.16, 0, 0.02, 0.0127);
+  const auto pts = prep::barPoints(bar, s);
+  EXPECT_EQ(pts.size(), 59u);
+  EXPECT_NEAR(pts[1][0] - pts[0][0], s, 1e-12);
+  EXPECT_NEAR(bar.area(), 1.26677e-4, 1e-9);
+  const auto st = prep::stirrups(0.04, 0.15, 1.16 - 0.04 + 0.075, 0.02, 0.24, 0.01);
+  ASSERT_EQ(st.size(), 8u);
+  EXPECT_NEAR(st.back().x0, 1.09, 1e-12);
+  // A 0.22 m stirrup at spacing ≤ s: 11 segments of exactly 0.02 m.
+  EXPECT_EQ(prep::barPoints(st[0], s).size(), 12u);
+}
+
+double total(const ParticleSet& ps, int column) {
+  double t = 0;
+  for (std::size_t k = 0; k < ps.size(); ++k) t += ps.fixedRow(k)[column];
+  return t;
+}
+
+TEST(Examples, LoadsSupportsAndBars) {
+  for (const std::string& name : exampleNames()) {
+    const Example ex = example(name);
+    EXPECT_EQ(ex.name, name);
+    EXPECT_GT(ex.steps, 0);
+    EXPECT_GT(ex.thesisMplm, 0);
+    const ParticleSet& ps = ex.particles;
+    EXPECT_GT(total(ps, MONITOR), 0) << name;
+    if (!ex.beam) {
+      // 1 MPa on the 0.14 × 0.12 m section, balanced.
+      double up = 0;
+      for (std::size_t k = 0; k < ps.size(); ++k) up += std::max(0.0, ps.fixedRow(k)[LOAD_Y]);
+      EXPECT_NEAR(up, 0.14 * 0.12 * 1e6, 1e-6) << name;
+      EXPECT_NEAR(total(ps, LOAD_Y), 0, 1e-6) << name;
+      continue;
+    }
+    // 1 kN/m over the span, downward; pinned at the left end, roller at the right.
+    EXPECT_NEAR(total(ps, LOAD_Y), -1e3 * ex.span, 1e-6) << name;
+    const auto pinned = select(ps, [](const double* f) { return f[CONSTRAINT] == 3; });
+    const auto roller = select(ps, [](const double* f) { return f[CONSTRAINT] == 2; });
+    EXPECT_EQ(pinned.size(), 3u) << name;  // bottom particles within 4 cm of each end
+    EXPECT_EQ(roller.size(), 3u) << name;
+    // Every other steel particle of a bar links to concrete.
+    const auto steel = select(ps, [](const double* f) { return isSteel(f); });
+    const auto links = select(ps, [](const double* f) { return isSteel(f) && f[LINK] == 1; });
+    if (name == "plain_beam") {
+      EXPECT_TRUE(steel.empty());
+    }
+    if (name == "rc_beam") {
+      EXPECT_EQ(steel.size(), 59u);
+      EXPECT_EQ(links.size(), 30u);
+    }
+    // ACI 318 of the section (hand calculations in aci318_test.cpp).
+    if (name == "plain_beam") {
+      EXPECT_NEAR(ex.aci, 22.169, 0.01);
+    }
+    if (name == "rc_beam" || name == "rc_beam_stirrups") {
+      EXPECT_NEAR(ex.aci, 71.93, 0.01) << name;
+      EXPECT_EQ(ex.aciMode, "flexural") << name;
+    }
+    if (name == "rc_beam_shear") {
+      EXPECT_NEAR(ex.aci, 228.64, 0.05);
+      EXPECT_EQ(ex.aciMode, "shear");
+    }
+    if (name == "deep_beam") {
+      double bars = 0;
+      for (std::size_t k : steel) bars = std::max(bars, ps.fixedRow(k)[BAR]);
+      EXPECT_EQ(bars, 11);  // the longitudinal bar and 10 stirrups
+    }
+  }
+}
+
+}  // namespace
+}  // namespace pdq::mplm
