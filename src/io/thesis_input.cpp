@@ -177,7 +177,7 @@ void writeParticleFiles(const std::string& dir, const ParticleSet& ps, const Sch
     for (std::size_t k = 0; k < ps.size(); ++k) {
       line = std::to_string(ps.gid[k]);
       const double* row = fixed ? ps.fixedRow(k) : ps.alterRow(k);
-      for (int c = 0; c < w; ++c) line += " " + fmt17(row[c]);
+      for (int c = 0; c < w; ++c) (line += ' ') += fmt17(row[c]);
       out << line << "\n";
     }
     f.commit();
