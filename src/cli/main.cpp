@@ -37,7 +37,9 @@ std::string extrasMessage(CLI::App& app) {
   CLI::App* at = &app;
   while (!at->get_subcommands().empty()) at = at->get_subcommands().front();
   std::string msg;
+  // The first one only: after a wrong command name the rest means nothing.
   for (const auto& arg : at->remaining()) {
+    if (!msg.empty()) break;
     const bool option = arg.size() > 1 && arg[0] == '-';
     std::string name = arg.substr(0, arg.find('='));
     std::vector<std::string> commands;
@@ -94,7 +96,7 @@ int main(int argc, char** argv) {
   runCmd->add_option("--restart", run.restart,
                      "continue from this ParticleAlterAttrs.<step>.rst (with its Bonds.<step>.rst)");
   runCmd->add_option("--steps", run.steps, "run to this step instead of the scenario's")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0L, 1000000000000L));
   runCmd->add_option("-o,--out", run.out, "output folder instead of the scenario's");
   auto* q = runCmd->add_flag("-q,--quiet", quiet, "print only errors");
   runCmd->add_flag("-v,--verbose", verbose, "also print the setup summary and timings")
@@ -146,7 +148,7 @@ int main(int argc, char** argv) {
       "info", "what a scenario will do: particles, bonds, time step, memory, processor grid");
   infoCmd->add_option("input", info.input, "scenario file or .dat folder")->required();
   infoCmd->add_option("--ranks", info.ranks, "also show the processor grid for this many ranks")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, 10000000));
   addPlugin(infoCmd);
 
   CLI::App* listCmd = app.add_subcommand("list", "list the models, generators and strength searches");
@@ -171,11 +173,12 @@ int main(int argc, char** argv) {
     return root ? app.exit(e) : Ok;
   } catch (const CLI::CallForVersion& e) {
     return root ? app.exit(e) : Ok;
-  } catch (const CLI::ExtrasError&) {
-    if (root) printError(extrasMessage(app) + "; see --help");
-    return BadCommand;
   } catch (const CLI::ParseError& e) {
-    if (root) printError(std::string(e.what()) + "; see --help");
+    // Arguments nobody expected explain the error best (a misspelt option or command).
+    CLI::App* at = &app;
+    while (!at->get_subcommands().empty()) at = at->get_subcommands().front();
+    const bool extras = dynamic_cast<const CLI::ExtrasError*>(&e) || !at->remaining().empty();
+    if (root) printError((extras ? extrasMessage(app) : std::string(e.what())) + "; see --help");
     return BadCommand;
   }
   run.verbosity = quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;

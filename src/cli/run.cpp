@@ -19,19 +19,12 @@ void runCommand(const RunOptions& o) {
   if (!o.out.empty()) pb.run.outDir = o.out;
   if (o.steps >= 0) pb.run.steps = o.steps;
   BondState bonds;
-  if (!o.restart.empty()) {
-    bonds = readRestart(o.restart, pb);
-    if (pb.run.firstStep > pb.run.steps)
-      throw InputError(o.restart, 0,
-                       "the restart is at step " + std::to_string(pb.run.firstStep) +
-                           ", after the run's last step " + std::to_string(pb.run.steps) +
-                           " (give more --steps)");
-  }
+  if (!o.restart.empty()) bonds = readRestart(o.restart, pb);
   const double particles = static_cast<double>(pb.particles.size());
   const std::string modelName = pb.modelName;
   Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
   if (!o.restart.empty()) sim.restoreBonds(std::move(bonds));
-  addStandardOutputs(sim, pb);
+  addStandardOutputs(sim, pb.output);
   const bool talk = comm.root() && o.verbosity != Verbosity::Quiet;
   sim.setup();
   const std::string about = summary(sim, modelName, o.input);

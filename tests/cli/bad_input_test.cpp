@@ -85,7 +85,7 @@ TEST(CliBadInput, ScenarioCasesNameFileAndLineAndWriteNothing) {
     const std::string sc = springCase(dir, 40);
     c.spoil(dir);
     const auto before = filesUnder(dir);
-    const auto r = pdq({"run", sc}, dir);
+    const auto r = runPdq({"run", sc}, dir);
     EXPECT_EQ(r.code, 1) << r.all();
     EXPECT_THAT(r.err, HasSubstr(c.expected));
     EXPECT_THAT(r.err, HasSubstr("pdq: error: "));
@@ -97,7 +97,7 @@ TEST(CliBadInput, ScenarioCasesNameFileAndLineAndWriteNothing) {
 TEST(CliBadInput, ThesisFilesNameFileAndLine) {
   const std::string dir = freshDir("bad_input_dat");
   const std::string sc = springCase(dir, 40);
-  ASSERT_EQ(pdq({"prep", sc, "-o", "dat"}, dir).code, 0);
+  ASSERT_EQ(runPdq({"prep", sc, "-o", "dat"}, dir).code, 0);
   const std::string input = readFile(dir + "/dat/pdQInput.dat");
   const std::string user = readFile(dir + "/dat/pdQUserInput.dat");
   struct DatCase {
@@ -121,10 +121,11 @@ TEST(CliBadInput, ThesisFilesNameFileAndLine) {
     SCOPED_TRACE(c.name);
     writeFile(dir + "/dat/pdQInput.dat", input);
     writeFile(dir + "/dat/pdQUserInput.dat", user);
-    if (!fs::exists(dir + "/dat/ParticleAlterAttrs.dat"))
-      ASSERT_EQ(pdq({"prep", sc, "-o", "dat"}, dir).code, 0);
+    if (!fs::exists(dir + "/dat/ParticleAlterAttrs.dat")) {
+      ASSERT_EQ(runPdq({"prep", sc, "-o", "dat"}, dir).code, 0);
+    }
     c.spoil();
-    const auto r = pdq({"run", "dat", "--out", "out"}, dir);
+    const auto r = runPdq({"run", "dat", "--out", "out"}, dir);
     EXPECT_EQ(r.code, 1) << r.all();
     EXPECT_THAT(r.err, HasSubstr(c.expected));
     EXPECT_FALSE(fs::exists(dir + "/out"));
@@ -133,11 +134,11 @@ TEST(CliBadInput, ThesisFilesNameFileAndLine) {
 
 TEST(CliBadInput, MissingScenarioAndPlugin) {
   const std::string dir = freshDir("bad_input_missing");
-  auto r = pdq({"run", "nowhere.toml"}, dir);
+  auto r = runPdq({"run", "nowhere.toml"}, dir);
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("nowhere.toml: cannot read the scenario"));
   writeFile(dir + "/not_a_library.so", "text");
-  r = pdq({"list", "--plugin", "not_a_library.so"}, dir);
+  r = runPdq({"list", "--plugin", "not_a_library.so"}, dir);
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("not_a_library.so: cannot load plugin"));
   EXPECT_TRUE(filesUnder(dir) == std::vector<std::string>{"not_a_library.so"});

@@ -10,44 +10,44 @@
 namespace fs = std::filesystem;
 using pdq::test::filesUnder;
 using pdq::test::freshDir;
-using pdq::test::pdq;
+using pdq::test::runPdq;
 using pdq::test::readFile;
 using pdq::test::springCase;
 using testing::HasSubstr;
 
 TEST(Cli, HelpListsEverySubcommand) {
-  const auto r = pdq({"--help"});
+  const auto r = runPdq({"--help"});
   EXPECT_EQ(r.code, 0) << r.all();
   for (const char* cmd : {"run", "prep", "post", "strength", "info", "list"})
     EXPECT_THAT(r.out, HasSubstr(cmd));
-  const auto run = pdq({"run", "--help"});
+  const auto run = runPdq({"run", "--help"});
   EXPECT_EQ(run.code, 0);
   for (const char* opt : {"--restart", "--plugin", "--steps", "--quiet", "--verbose", "--out"})
     EXPECT_THAT(run.out, HasSubstr(opt));
 }
 
 TEST(Cli, UnknownCommandsAndOptionsSuggestTheNearest) {
-  auto r = pdq({"rn", "x.toml"});
+  auto r = runPdq({"rn", "x.toml"});
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.err, HasSubstr("unknown command 'rn'"));
   EXPECT_THAT(r.err, HasSubstr("did you mean 'run'"));
   const std::string dir = freshDir("unknown_option");
   const std::string sc = springCase(dir, 10);
-  r = pdq({"run", sc, "--stpes", "3"});
+  r = runPdq({"run", sc, "--stpes", "3"});
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.err, HasSubstr("unknown option '--stpes'"));
   EXPECT_THAT(r.err, HasSubstr("did you mean '--steps'"));
-  r = pdq({"post", "pictrue", sc});
+  r = runPdq({"post", "pictrue", sc});
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.err, HasSubstr("did you mean 'picture'"));
-  r = pdq({"run"});
+  r = runPdq({"run"});
   EXPECT_EQ(r.code, 2);
   EXPECT_THAT(r.err, HasSubstr("input"));
   EXPECT_FALSE(fs::exists(dir + "/out"));
 }
 
 TEST(Cli, ListNamesModelsAndGenerators) {
-  const auto r = pdq({"list"});
+  const auto r = runPdq({"list"});
   EXPECT_EQ(r.code, 0) << r.all();
   EXPECT_THAT(r.out, HasSubstr("spring"));
   EXPECT_THAT(r.out, HasSubstr("generators"));
@@ -57,7 +57,7 @@ TEST(Cli, InfoDescribesTheProblemAndWritesNothing) {
   const std::string dir = freshDir("info");
   const std::string sc = springCase(dir, 40);
   const auto before = filesUnder(dir);
-  const auto r = pdq({"info", sc, "--ranks", "4"}, dir);
+  const auto r = runPdq({"info", sc, "--ranks", "4"}, dir);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_THAT(r.out, HasSubstr("model         spring"));
   EXPECT_THAT(r.out, HasSubstr("particles     128"));
@@ -73,14 +73,14 @@ TEST(Cli, InfoDescribesTheProblemAndWritesNothing) {
 TEST(Cli, RunWritesItsOutputsAndReportsProgress) {
   const std::string dir = freshDir("run");
   const std::string sc = springCase(dir, 40);
-  const auto r = pdq({"run", sc}, dir);
+  const auto r = runPdq({"run", sc}, dir);
   ASSERT_EQ(r.code, 0) << r.all();
   // Not a terminal: plain log lines, the last one at the last step.
   EXPECT_THAT(r.out, HasSubstr("step 0/40"));
   EXPECT_THAT(r.out, HasSubstr("step 40/40 (100%)"));
   EXPECT_THAT(r.out, HasSubstr("particle-steps/s"));
   const auto files = filesUnder(dir + "/out");
-  for (const char* f : {"ParticleAlterAttrs.000010.rst", "ParticleAlterAttrs.000040.rst",
+  for (const char* f : {"ParticleAlterAttrs.10.rst", "ParticleAlterAttrs.40.rst",
                         "timing.out", "debug.txt", "timehist.dat", "history.csv"})
     EXPECT_NE(std::find(files.begin(), files.end(), f), files.end()) << f;
   // history.csv: globals at steps 0, 5, ..., 40 and a header.
@@ -89,47 +89,46 @@ TEST(Cli, RunWritesItsOutputsAndReportsProgress) {
   // Springs of the upper half broke.
   EXPECT_EQ(std::count(hist.begin(), hist.end(), '\n'), 10) << hist;
 
-  const auto quiet = pdq({"run", sc, "-q", "--out", "quiet"}, dir);
+  const auto quiet = runPdq({"run", sc, "-q", "--out", "quiet"}, dir);
   EXPECT_EQ(quiet.code, 0) << quiet.all();
   EXPECT_EQ(quiet.out, "");
-  const auto verbose = pdq({"run", sc, "--verbose", "--out", "verbose", "--steps", "5"}, dir);
+  const auto verbose = runPdq({"run", sc, "--verbose", "--out", "verbose", "--steps", "5"}, dir);
   EXPECT_EQ(verbose.code, 0) << verbose.all();
   EXPECT_THAT(verbose.out, HasSubstr("particles     128"));
   EXPECT_THAT(verbose.out, HasSubstr("total"));  // the timing table
-  EXPECT_TRUE(fs::exists(dir + "/verbose/ParticleAlterAttrs.000005.rst"));
-  const auto both = pdq({"run", sc, "-q", "-v"}, dir);
+  EXPECT_TRUE(fs::exists(dir + "/verbose/ParticleAlterAttrs.5.rst"));
+  const auto both = runPdq({"run", sc, "-q", "-v"}, dir);
   EXPECT_EQ(both.code, 2);
 }
 
 TEST(Cli, RestartContinuesBitwise) {
   const std::string dir = freshDir("restart");
   const std::string sc = springCase(dir, 30);
-  ASSERT_EQ(pdq({"run", sc, "-q"}, dir).code, 0);
-  const std::string whole = readFile(dir + "/out/ParticleAlterAttrs.000030.rst");
-  const std::string wholeBonds = readFile(dir + "/out/Bonds.000030.rst");
+  ASSERT_EQ(runPdq({"run", sc, "-q"}, dir).code, 0);
+  const std::string whole = readFile(dir + "/out/ParticleAlterAttrs.30.rst");
+  const std::string wholeBonds = readFile(dir + "/out/Bonds.30.rst");
   ASSERT_FALSE(whole.empty());
   fs::copy(dir + "/out", dir + "/first");
   fs::remove_all(dir + "/out");
-  const auto r = pdq({"run", sc, "-q", "--restart", "first/ParticleAlterAttrs.000010.rst",
+  const auto r = runPdq({"run", sc, "-q", "--restart", "first/ParticleAlterAttrs.10.rst",
                       "--out", "second"},
                      dir);
   ASSERT_EQ(r.code, 0) << r.all();
-  EXPECT_EQ(readFile(dir + "/second/ParticleAlterAttrs.000030.rst"), whole);
-  EXPECT_EQ(readFile(dir + "/second/Bonds.000030.rst"), wholeBonds);
-  EXPECT_FALSE(fs::exists(dir + "/second/ParticleAlterAttrs.000010.rst"));
+  EXPECT_EQ(readFile(dir + "/second/ParticleAlterAttrs.30.rst"), whole);
+  EXPECT_EQ(readFile(dir + "/second/Bonds.30.rst"), wholeBonds);
 
-  const auto past = pdq({"run", sc, "--restart", "first/ParticleAlterAttrs.000030.rst",
+  const auto past = runPdq({"run", sc, "--restart", "first/ParticleAlterAttrs.30.rst",
                          "--steps", "20", "--out", "third"},
                         dir);
   EXPECT_EQ(past.code, 1);
-  EXPECT_THAT(past.err, HasSubstr("after the run's last step 20"));
+  EXPECT_THAT(past.err, HasSubstr("beyond the run's last step 20"));
   EXPECT_FALSE(fs::exists(dir + "/third"));
 }
 
 TEST(Cli, PrepWritesTheThesisFiles) {
   const std::string dir = freshDir("prep");
   const std::string sc = springCase(dir, 20);
-  const auto r = pdq({"prep", sc, "-o", "dat"}, dir);
+  const auto r = runPdq({"prep", sc, "-o", "dat"}, dir);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_THAT(r.out, HasSubstr("128 particles"));
   EXPECT_EQ(filesUnder(dir + "/dat"),
@@ -147,29 +146,29 @@ TEST(Cli, PrepWritesTheThesisFiles) {
 TEST(Cli, PostDrawsPicturesAndPlots) {
   const std::string dir = freshDir("post");
   const std::string sc = springCase(dir, 20);
-  ASSERT_EQ(pdq({"run", sc, "-q"}, dir).code, 0);
-  auto r = pdq({"post", "picture", sc, "--set", "colour_by=damage", "--set", "magnification=5"},
+  ASSERT_EQ(runPdq({"run", sc, "-q"}, dir).code, 0);
+  auto r = runPdq({"post", "picture", sc, "--set", "colour_by=damage", "--set", "magnification=5"},
                dir);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_THAT(r.out, HasSubstr("step 20"));
   const std::string png = readFile(dir + "/out/damage_000020.png");
   ASSERT_GT(png.size(), 1000u);
   EXPECT_EQ(png.substr(1, 3), "PNG");
-  r = pdq({"post", "picture", sc, "--restart", "out/ParticleAlterAttrs.000010.rst", "-o",
+  r = runPdq({"post", "picture", sc, "--restart", "out/ParticleAlterAttrs.10.rst", "-o",
            "early.svg"},
           dir);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_THAT(readFile(dir + "/early.svg"), HasSubstr("<svg"));
-  r = pdq({"post", "picture", sc, "--set", "colour_by=damag"}, dir);
+  r = runPdq({"post", "picture", sc, "--set", "colour_by=damag"}, dir);
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("did you mean 'damage'"));
 
-  r = pdq({"post", "plot", "out/history.csv", "-x", "step", "-y", "broken_bonds", "-o",
+  r = runPdq({"post", "plot", "out/history.csv", "-x", "step", "-y", "broken_bonds", "-o",
            "broken.png"},
           dir);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_EQ(readFile(dir + "/broken.png").substr(1, 3), "PNG");
-  r = pdq({"post", "plot", "out/history.csv", "-y", "brokn"}, dir);
+  r = runPdq({"post", "plot", "out/history.csv", "-y", "brokn"}, dir);
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("did you mean 'broken_bonds'"));
   EXPECT_FALSE(fs::exists(dir + "/out/history.png"));
@@ -178,7 +177,7 @@ TEST(Cli, PostDrawsPicturesAndPlots) {
 TEST(Cli, StrengthWithoutADriverSaysSo) {
   const std::string dir = freshDir("strength");
   const std::string sc = springCase(dir, 20);
-  const auto r = pdq({"strength", sc}, dir);
+  const auto r = runPdq({"strength", sc}, dir);
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("no strength driver is available for model 'spring'"));
   EXPECT_FALSE(fs::exists(dir + "/out"));

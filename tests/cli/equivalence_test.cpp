@@ -7,13 +7,13 @@
 #include "spring_case.hpp"
 
 using pdq::test::freshDir;
-using pdq::test::pdq;
+using pdq::test::runPdq;
 using pdq::test::readFile;
 using pdq::test::springCase;
 
 namespace {
 void expectSameFinalState(const std::string& a, const std::string& b) {
-  for (const char* f : {"ParticleAlterAttrs.000040.rst", "Bonds.000040.rst"}) {
+  for (const char* f : {"ParticleAlterAttrs.40.rst", "Bonds.40.rst"}) {
     const std::string x = readFile(a + "/" + f), y = readFile(b + "/" + f);
     ASSERT_FALSE(x.empty()) << a << "/" << f;
     EXPECT_TRUE(x == y) << f << " differs between " << a << " and " << b;
@@ -24,10 +24,10 @@ void expectSameFinalState(const std::string& a, const std::string& b) {
 TEST(CliEquivalence, ScenarioAndThesisFilesAgreeBitwise) {
   const std::string dir = freshDir("equivalence_dat");
   const std::string sc = springCase(dir, 40);
-  ASSERT_EQ(pdq({"prep", sc, "-o", "dat"}, dir).code, 0);
-  auto r = pdq({"run", sc, "-q", "--out", "from_toml"}, dir);
+  ASSERT_EQ(runPdq({"prep", sc, "-o", "dat"}, dir).code, 0);
+  auto r = runPdq({"run", sc, "-q", "--out", "from_toml"}, dir);
   ASSERT_EQ(r.code, 0) << r.all();
-  r = pdq({"run", "dat", "-q", "--out", "from_dat"}, dir);
+  r = runPdq({"run", "dat", "-q", "--out", "from_dat"}, dir);
   ASSERT_EQ(r.code, 0) << r.all();
   expectSameFinalState(dir + "/from_toml", dir + "/from_dat");
   // The time history of the monitored particles too.
@@ -37,9 +37,9 @@ TEST(CliEquivalence, ScenarioAndThesisFilesAgreeBitwise) {
 TEST(CliEquivalence, MpirunMatchesOneRankBitwise) {
   const std::string dir = freshDir("equivalence_np");
   const std::string sc = springCase(dir, 40);
-  auto r = pdq({"run", sc, "-q", "--out", "np1"}, dir);
+  auto r = runPdq({"run", sc, "-q", "--out", "np1"}, dir);
   ASSERT_EQ(r.code, 0) << r.all();
-  r = pdq({"run", sc, "-q", "--out", "np2"}, dir, 2);
+  r = runPdq({"run", sc, "-q", "--out", "np2"}, dir, 2);
   ASSERT_EQ(r.code, 0) << r.all();
   expectSameFinalState(dir + "/np1", dir + "/np2");
   EXPECT_EQ(readFile(dir + "/np1/history.csv"), readFile(dir + "/np2/history.csv"));
@@ -48,7 +48,7 @@ TEST(CliEquivalence, MpirunMatchesOneRankBitwise) {
   std::string text = readFile(grid);
   text.replace(text.find("min_cell_size"), 0, "procs = [1, 3, 1]\n");
   pdq::test::writeFile(grid, text);
-  r = pdq({"run", grid, "-q", "--out", "np3"}, dir, 3);
+  r = runPdq({"run", grid, "-q", "--out", "np3"}, dir, 3);
   ASSERT_EQ(r.code, 0) << r.all();
   expectSameFinalState(dir + "/np1", dir + "/np3");
 }
@@ -59,7 +59,7 @@ TEST(CliEquivalence, ErrorsUnderMpirunArePrintedOnceWithNoOutput) {
   std::string text = readFile(sc);
   text.replace(text.find("horizon = 1.5"), 13, "horizon = 1.5\ndampnig = 0.1");
   pdq::test::writeFile(sc, text);
-  const auto r = pdq({"run", sc}, dir, 2);
+  const auto r = runPdq({"run", sc}, dir, 2);
   EXPECT_NE(r.code, 0);
   EXPECT_EQ(r.code, 1) << r.all();
   const std::string msg = "lattice.toml:9: unknown parameter 'dampnig'";

@@ -20,12 +20,12 @@ TEST(CliExamples, EveryScenarioRuns) {
   for (const auto& sc : scenarios) {
     SCOPED_TRACE(sc.string());
     const std::string dir = freshDir("example_" + sc.stem().string());
-    auto r = pdq({"info", sc.string()}, dir);
+    auto r = runPdq({"info", sc.string()}, dir);
     EXPECT_EQ(r.code, 0) << r.all();
-    r = pdq({"run", sc.string(), "--steps", "5", "-q", "--out", "out"}, dir);
+    r = runPdq({"run", sc.string(), "--steps", "5", "-q", "--out", "out"}, dir);
     EXPECT_EQ(r.code, 0) << r.all();
-    EXPECT_TRUE(fs::exists(dir + "/out/ParticleAlterAttrs.000005.rst"));
-    r = pdq({"prep", sc.string(), "-o", "dat"}, dir);
+    EXPECT_TRUE(fs::exists(dir + "/out/ParticleAlterAttrs.5.rst"));
+    r = runPdq({"prep", sc.string(), "-o", "dat"}, dir);
     EXPECT_EQ(r.code, 0) << r.all();
     EXPECT_TRUE(fs::exists(dir + "/dat/ParticleFixedAttrs.dat"));
   }

@@ -47,7 +47,7 @@ std::string sourceDir() {
   return s ? s : PDQ_SOURCE_DIR_DEFAULT;
 }
 
-Run pdq(const std::vector<std::string>& args, const std::string& cwd, int ranks) {
+Run runPdq(const std::vector<std::string>& args, const std::string& cwd, int ranks) {
   const char* exe = std::getenv("PDQ_EXE");
   std::string cmd;
   if (!cwd.empty()) cmd += "cd " + quote(cwd) + " && ";

@@ -14,7 +14,7 @@ struct Run {
 };
 
 // `pdq args...` in `cwd` (empty: the current folder); ranks > 0: under mpirun -np ranks.
-Run pdq(const std::vector<std::string>& args, const std::string& cwd = "", int ranks = 0);
+Run runPdq(const std::vector<std::string>& args, const std::string& cwd = "", int ranks = 0);
 
 // A new empty folder for one test.
 std::string freshDir(const std::string& name);

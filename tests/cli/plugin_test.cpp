@@ -36,24 +36,24 @@ TEST(CliPlugin, OutOfTreeModelBuiltAgainstTheInstalledHeaders) {
 
   // The installed pdq, so the plugin and the command share one libpdq.
   setenv("PDQ_EXE", (prefix + "/bin/pdq").c_str(), 1);
-  auto r = pdq({"list", "--plugin", lib}, dir);
+  auto r = runPdq({"list", "--plugin", lib}, dir);
   EXPECT_EQ(r.code, 0) << r.all();
   EXPECT_THAT(r.out, HasSubstr("morse"));
   EXPECT_THAT(r.out, HasSubstr("morse_block"));
-  r = pdq({"run", "cluster.toml", "--steps", "200", "-q"}, dir);
+  r = runPdq({"run", "cluster.toml", "--steps", "200", "-q"}, dir);
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("unknown model 'morse'"));
-  r = pdq({"run", "cluster.toml", "--steps", "200", "--plugin", lib}, dir);
+  r = runPdq({"run", "cluster.toml", "--steps", "200", "--plugin", lib}, dir);
   ASSERT_EQ(r.code, 0) << r.all();
   // The compressed cube springs back: kinetic energy appears, and the total stays put.
   const std::string hist = readFile(dir + "/cluster_out/history.csv");
   ASSERT_THAT(hist, HasSubstr("kinetic"));
   // Under mpirun too, with the same bits.
-  r = pdq({"run", "cluster.toml", "--steps", "200", "--plugin", lib, "-q", "--out", "np2"}, dir,
+  r = runPdq({"run", "cluster.toml", "--steps", "200", "--plugin", lib, "-q", "--out", "np2"}, dir,
           2);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_EQ(readFile(dir + "/np2/history.csv"), hist);
-  EXPECT_EQ(readFile(dir + "/np2/ParticleAlterAttrs.000200.rst"),
-            readFile(dir + "/cluster_out/ParticleAlterAttrs.000200.rst"));
+  EXPECT_EQ(readFile(dir + "/np2/ParticleAlterAttrs.200.rst"),
+            readFile(dir + "/cluster_out/ParticleAlterAttrs.200.rst"));
   unsetenv("PDQ_EXE");
 }
