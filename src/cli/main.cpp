@@ -1,5 +1,198 @@
+// The pdq command: `pdq run|prep|post|strength|info|list ...`; `pdq --help` for more.
+// Runs alone (one rank) or under mpirun; every rank parses the same command line.
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
 #include <cstdio>
-int main() {
-  std::puts("pdq");
-  return 0;
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli/commands.hpp"
+#include "cli/guard.hpp"
+#include "cli/plugins.hpp"
+#include "engine/comm.hpp"
+#include "engine/error.hpp"
+#include "engine/model.hpp"
+#include "prep/generator.hpp"
+#include "scenario/strength.hpp"
+
+namespace {
+
+using namespace pdq::cli;
+
+// Names a command line option of `app` is known by (--long, -s).
+std::vector<std::string> optionNames(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::Option* opt : app.get_options()) {
+    for (const auto& l : opt->get_lnames()) names.push_back("--" + l);
+    for (const auto& s : opt->get_snames()) names.push_back("-" + s);
+  }
+  return names;
+}
+
+// "unknown option '--stpes' (did you mean '--steps'?)" for the arguments a (sub)command
+// did not expect.
+std::string extrasMessage(CLI::App& app) {
+  CLI::App* at = &app;
+  while (!at->get_subcommands().empty()) at = at->get_subcommands().front();
+  std::string msg;
+  // The first one only: after a wrong command name the rest means nothing.
+  for (const auto& arg : at->remaining()) {
+    if (!msg.empty()) break;
+    const bool option = arg.size() > 1 && arg[0] == '-';
+    std::string name = arg.substr(0, arg.find('='));
+    std::vector<std::string> commands;
+    for (const CLI::App* c : at->get_subcommands({})) commands.push_back(c->get_name());
+    msg += (msg.empty() ? "" : "; ") +
+           (option ? "unknown option '" + name + "'" + pdq::suggestion(name, optionNames(*at))
+            : commands.empty()
+                ? "unexpected argument '" + arg + "'"
+                : "unknown command '" + arg + "'" + pdq::suggestion(arg, commands));
+  }
+  return (msg.empty() ? std::string("unexpected arguments") : msg) + " for 'pdq" +
+         (at == &app ? "" : " " + at->get_name()) + "'";
+}
+
+void list() {
+  std::printf("models:\n");
+  for (const auto& [name, what] : pdq::ModelRegistry::list())
+    std::printf("  %-12s %s\n", name.c_str(), what.c_str());
+  std::printf("particle generators ([particles] generator = ...):\n");
+  for (const auto& [name, what] : pdq::GeneratorRegistry::list())
+    std::printf("  %-12s %s\n", name.c_str(), what.c_str());
+  std::printf("strength searches (pdq strength), by model:\n");
+  const auto drivers = pdq::StrengthRegistry::list();
+  if (drivers.empty()) std::printf("  (none)\n");
+  for (const auto& [name, what] : drivers) std::printf("  %-12s %s\n", name.c_str(), what.c_str());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  pdq::MpiSession mpi(&argc, &argv);
+  Guard guard;
+  const bool root = pdq::Comm(MPI_COMM_WORLD).root();
+
+  CLI::App app{
+      "pdq: parallel particle dynamics (peridynamics, lattice models, molecular dynamics).\n"
+      "Run alone or under mpirun -np N; see docs/tutorial.md and docs/scenario.md.",
+      "pdq"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "pdq 0.1.0");
+  std::vector<std::string> plugins;
+  auto addPlugin = [&](CLI::App* c) {
+    c->add_option("--plugin", plugins,
+                  "shared library with more models or generators (repeatable)")
+        ->check(CLI::ExistingFile)
+        ->take_all();
+  };
+
+  RunOptions run;
+  bool quiet = false, verbose = false;
+  CLI::App* runCmd = app.add_subcommand("run", "run a scenario (.toml) or a folder of the "
+                                               "thesis's .dat files");
+  runCmd->add_option("input", run.input, "scenario file or .dat folder")->required();
+  runCmd->add_option("--restart", run.restart,
+                     "continue from this ParticleAlterAttrs.<step>.rst (with its Bonds.<step>.rst)");
+  runCmd->add_option("--steps", run.steps, "run to this step instead of the scenario's")
+      ->check(CLI::Range(0L, 1000000000000L));
+  runCmd->add_option("-o,--out", run.out, "output folder instead of the scenario's");
+  auto* q = runCmd->add_flag("-q,--quiet", quiet, "print only errors");
+  runCmd->add_flag("-v,--verbose", verbose, "also print the setup summary and timings")
+      ->excludes(q);
+  addPlugin(runCmd);
+
+  PrepOptions prep;
+  CLI::App* prepCmd = app.add_subcommand(
+      "prep", "write the particle and input files a scenario generates, in the thesis's format");
+  prepCmd->add_option("scenario", prep.input, "scenario file (.toml)")->required();
+  prepCmd->add_option("-o,--out", prep.out, "folder for the .dat files (default: <scenario>_input)");
+  addPlugin(prepCmd);
+
+  CLI::App* postCmd =
+      app.add_subcommand("post", "pictures of the lattice and plots of histories from saved output");
+  postCmd->require_subcommand(1);
+  PictureCommandOptions picture;
+  CLI::App* pictureCmd =
+      postCmd->add_subcommand("picture", "draw the lattice (damage, any attribute) from a restart file");
+  pictureCmd->add_option("input", picture.input, "the scenario (or .dat folder) of the run")
+      ->required();
+  pictureCmd->add_option("--restart", picture.restart,
+                         "ParticleAlterAttrs.<step>.rst to draw (default: the latest in the "
+                         "scenario's output folder)");
+  pictureCmd->add_option("-o,--out", picture.out, "picture file (.png, .svg or .pdf)");
+  pictureCmd->add_option("--set", picture.set,
+                         "picture option key=value, as in [output.picture] (repeatable)");
+  addPlugin(pictureCmd);
+  PlotCommandOptions plot;
+  CLI::App* plotCmd =
+      postCmd->add_subcommand("plot", "plot columns of history.csv, timehist.dat or any table");
+  plotCmd->add_option("tables", plot.tables, "text tables")->required()->check(CLI::ExistingFile);
+  plotCmd->add_option("-x,--x", plot.x, "column on the horizontal axis (default: the first)");
+  plotCmd->add_option("-y,--y", plot.y, "column to plot (repeatable; default: all others)");
+  plotCmd->add_option("-o,--out", plot.out, "picture file (default: the table's name .png)");
+  plotCmd->add_option("--title", plot.title, "plot title");
+  plotCmd->add_option("--xlabel", plot.xLabel, "horizontal axis label");
+  plotCmd->add_option("--ylabel", plot.yLabel, "vertical axis label");
+
+  StrengthCommandOptions strength;
+  CLI::App* strengthCmd = app.add_subcommand(
+      "strength", "search the failure load of a scenario (models with a strength driver)");
+  strengthCmd->add_option("input", strength.input, "scenario file or .dat folder")->required();
+  strengthCmd->add_option("--set", strength.set, "driver option key=value (repeatable)");
+  addPlugin(strengthCmd);
+
+  InfoOptions info;
+  CLI::App* infoCmd = app.add_subcommand(
+      "info", "what a scenario will do: particles, bonds, time step, memory, processor grid");
+  infoCmd->add_option("input", info.input, "scenario file or .dat folder")->required();
+  infoCmd->add_option("--ranks", info.ranks, "also show the processor grid for this many ranks")
+      ->check(CLI::Range(1, 10000000));
+  addPlugin(infoCmd);
+
+  CLI::App* listCmd = app.add_subcommand("list", "list the models, generators and strength searches");
+  addPlugin(listCmd);
+
+  // An unknown command: say so with the nearest one, rather than CLI11's generic message.
+  if (argc > 1 && argv[1][0] != '-') {
+    std::vector<std::string> names;
+    for (const CLI::App* c : app.get_subcommands({})) names.push_back(c->get_name());
+    if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
+      if (root)
+        printError("unknown command '" + std::string(argv[1]) + "'" +
+                   pdq::suggestion(argv[1], names) + "; see pdq --help");
+      return BadCommand;
+    }
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return root ? app.exit(e) : Ok;
+  } catch (const CLI::CallForAllHelp& e) {
+    return root ? app.exit(e) : Ok;
+  } catch (const CLI::CallForVersion& e) {
+    return root ? app.exit(e) : Ok;
+  } catch (const CLI::ParseError& e) {
+    // Arguments nobody expected explain the error best (a misspelt option or command).
+    CLI::App* at = &app;
+    while (!at->get_subcommands().empty()) at = at->get_subcommands().front();
+    const bool extras = dynamic_cast<const CLI::ExtrasError*>(&e) || !at->remaining().empty();
+    if (root) printError((extras ? extrasMessage(app) : std::string(e.what())) + "; see --help");
+    return BadCommand;
+  }
+  run.verbosity = quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
+  if (prep.out.empty() && !prep.input.empty())
+    prep.out = std::filesystem::path(prep.input).stem().string() + "_input";
+
+  return guard.run([&] {
+    loadPlugins(plugins);
+    if (runCmd->parsed()) runCommand(run);
+    if (prepCmd->parsed()) prepCommand(prep);
+    if (pictureCmd->parsed()) pictureCommand(picture);
+    if (plotCmd->parsed()) plotCommand(plot);
+    if (strengthCmd->parsed()) strengthCommand(strength);
+    if (infoCmd->parsed()) infoCommand(info);
+    if (listCmd->parsed() && root) list();
+  });
 }

@@ -95,7 +95,7 @@ Problem readThesisInput(const std::string& dir) {
   const auto lines = readLines(input);
   std::vector<double> head;
   std::size_t k = 0;
-  int lastLine = 0;
+  int lastLine = 0, cellLine = 0;
   for (; k < lines.size() && head.size() < 5; ++k) {
     std::istringstream in(lines[k].second);
     std::string tok;
@@ -107,6 +107,7 @@ Problem readThesisInput(const std::string& dir) {
                          "'" + tok + "' is not a number (expected nPX nPY nPZ, minimum cell size, "
                                      "number of time steps)");
       head.push_back(v);
+      if (head.size() == 4) cellLine = lines[k].first;
     }
     lastLine = lines[k].first;
   }
@@ -154,6 +155,11 @@ Problem readThesisInput(const std::string& dir) {
   pb.model = ModelRegistry::create(pb.modelName, user, name->line);
   pb.model->configure(modelParams);
   modelParams.checkAllUsed();
+  if (pb.run.minCellSize < pb.model->horizon())
+    throw InputError(input, cellLine,
+                     "the minimum cell size " + fmt17(pb.run.minCellSize) +
+                         " is below the model's horizon " + fmt17(pb.model->horizon()) +
+                         "; neighbours would be missed");
   pb.particles = readParticleFiles(dir + "/ParticleFixedAttrs.dat", dir + "/ParticleAlterAttrs.dat",
                                    pb.model->schema());
   return pb;
@@ -171,7 +177,7 @@ void writeParticleFiles(const std::string& dir, const ParticleSet& ps, const Sch
     for (std::size_t k = 0; k < ps.size(); ++k) {
       line = std::to_string(ps.gid[k]);
       const double* row = fixed ? ps.fixedRow(k) : ps.alterRow(k);
-      for (int c = 0; c < w; ++c) line += " " + fmt17(row[c]);
+      for (int c = 0; c < w; ++c) (line += ' ') += fmt17(row[c]);
       out << line << "\n";
     }
     f.commit();

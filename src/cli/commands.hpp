@@ -1,0 +1,54 @@
+#pragma once
+// The pdq subcommands. Each runs on every rank (under mpirun or alone); files are
+// written by rank 0 or collectively through the engine's outputs.
+#include <string>
+#include <vector>
+
+#include "cli/progress.hpp"
+
+namespace pdq::cli {
+
+struct RunOptions {
+  std::string input;    // scenario .toml or a folder of the thesis's .dat files
+  std::string restart;  // ParticleAlterAttrs.<step>.rst to continue from
+  std::string out;      // output folder (overrides the scenario's)
+  long steps = -1;      // last step (overrides the scenario's)
+  Verbosity verbosity = Verbosity::Normal;
+};
+void runCommand(const RunOptions& o);
+
+struct InfoOptions {
+  std::string input;
+  int ranks = 0;  // also show the processor grid for this many ranks
+};
+void infoCommand(const InfoOptions& o);
+
+struct PrepOptions {
+  std::string input;  // scenario .toml
+  std::string out;    // folder for pdQInput.dat, pdQUserInput.dat, Particle*Attrs.dat
+};
+void prepCommand(const PrepOptions& o);
+
+struct PictureCommandOptions {
+  std::string input;    // the scenario (or .dat folder) the run came from
+  std::string restart;  // ParticleAlterAttrs.<step>.rst; empty: the latest in the output
+  std::string out;      // picture file; empty: <output>/<name>_<step>.<format>
+  std::vector<std::string> set;  // key=value picture options ([output.picture] keys)
+};
+void pictureCommand(const PictureCommandOptions& o);
+
+struct PlotCommandOptions {
+  std::vector<std::string> tables;  // timehist.dat, history.csv, ...
+  std::string x;                    // column for the horizontal axis (default: the first)
+  std::vector<std::string> y;       // columns to plot (default: all others)
+  std::string out, title, xLabel, yLabel;
+};
+void plotCommand(const PlotCommandOptions& o);
+
+struct StrengthCommandOptions {
+  std::string input;
+  std::vector<std::string> set;  // key=value options of the model's strength driver
+};
+void strengthCommand(const StrengthCommandOptions& o);
+
+}  // namespace pdq::cli

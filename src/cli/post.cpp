@@ -1,0 +1,115 @@
+// pdq post: pictures of the lattice from a restart file, and plots of time histories.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <regex>
+
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "engine/error.hpp"
+#include "io/restart.hpp"
+#include "post/line_plot.hpp"
+#include "post/picture_output.hpp"
+#include "post/snapshot.hpp"
+#include "post/table.hpp"
+#include "scenario/scenario.hpp"
+
+namespace pdq::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The restart file of the highest step in `dir`.
+std::string latestRestart(const std::string& dir, const std::string& input) {
+  static const std::regex name(R"(ParticleAlterAttrs\.(\d+)\.rst)");
+  std::string best;
+  long bestStep = -1;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    std::smatch m;
+    const std::string f = e.path().filename().string();
+    if (std::regex_match(f, m, name) && std::stol(m[1]) > bestStep) {
+      bestStep = std::stol(m[1]);
+      best = e.path().string();
+    }
+  }
+  if (best.empty())
+    throw InputError(input, 0,
+                     "no restart file (ParticleAlterAttrs.<step>.rst) in " + dir +
+                         "; run the scenario first or give --restart");
+  return best;
+}
+
+}  // namespace
+
+void pictureCommand(const PictureCommandOptions& o) {
+  Comm comm(MPI_COMM_WORLD);
+  Scenario sc = loadScenario(o.input);
+  Problem& pb = sc.problem;
+  const std::string restart = o.restart.empty() ? latestRestart(pb.run.outDir, o.input) : o.restart;
+  BondState bonds = readRestart(restart, pb);
+  // The picture options: the scenario's [output.picture] table, then --set items.
+  Params table = pb.output.picture ? *pb.output.picture : Params("picture options");
+  setFromCommandLine(table, o.set);
+  post::PictureOptions opt = post::pictureOptions(table);
+  table.checkAllUsed();
+  const Schema schema = pb.model->schema();
+  post::checkRequest(opt.request, post::quantityNames(schema, *pb.model), schema.bond);
+  // Set up (bonds, fields) at the restart's step without stepping, so the picture is
+  // the one the run would have drawn at that step.
+  RunConfig cfg = pb.run;
+  cfg.steps = cfg.firstStep;
+  cfg.outDir = ".";
+  const std::string outDir = pb.run.outDir;
+  Simulation sim(std::move(pb.model), std::move(pb.particles), cfg, comm);
+  sim.restoreBonds(std::move(bonds));
+  sim.setup();
+  const post::Snapshot snap = post::gatherSnapshot(sim.context(), sim.model(), comm, sim.step());
+  if (comm.root()) {
+    std::string path = o.out;
+    if (path.empty()) {
+      fs::create_directories(outDir);
+      path = outDir + "/" + post::PictureOutput::fileName(opt, sim.step());
+    }
+    post::renderSnapshot(snap, opt.request, path);
+    std::printf("wrote %s (step %ld, %zu particles)\n", path.c_str(), sim.step(),
+                snap.particles());
+  }
+  comm.barrier();
+}
+
+void plotCommand(const PlotCommandOptions& o) {
+  Comm comm(MPI_COMM_WORLD);
+  std::vector<post::Table> tables;
+  for (const auto& t : o.tables) tables.push_back(post::readTable(t));
+  std::vector<post::Series> series;
+  std::string xName;
+  for (const auto& t : tables) {
+    const std::string x = o.x.empty() ? t.names.at(0) : o.x;
+    xName = x;
+    const auto& xs = t.column(x);
+    std::vector<std::string> ys = o.y;
+    if (ys.empty())
+      for (const auto& n : t.names)
+        if (n != x) ys.push_back(n);
+    for (const auto& y : ys) {
+      const std::string label = tables.size() > 1 ? fs::path(t.source).filename().string() + ": " + y : y;
+      series.push_back({label, xs, t.column(y)});
+    }
+  }
+  post::PlotStyle style;
+  style.title = o.title.empty() ? fs::path(o.tables[0]).filename().string() : o.title;
+  style.xLabel = o.xLabel.empty() ? xName : o.xLabel;
+  style.yLabel = o.yLabel.empty() && series.size() == 1 ? series[0].name : o.yLabel;
+  const std::string path =
+      o.out.empty() ? fs::path(o.tables[0]).replace_extension(".png").string() : o.out;
+  if (comm.root()) {
+    post::plotLines(series, style, path);
+    std::printf("wrote %s (%zu curve%s)\n", path.c_str(), series.size(),
+                series.size() == 1 ? "" : "s");
+  }
+  comm.barrier();
+}
+
+}  // namespace pdq::cli

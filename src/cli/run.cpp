@@ -1,0 +1,52 @@
+// pdq run: a scenario (or the thesis's .dat files) from step 0 or from a restart file.
+#include <unistd.h>
+
+#include <cstdio>
+
+#include "cli/commands.hpp"
+#include "cli/summary.hpp"
+#include "engine/error.hpp"
+#include "io/restart.hpp"
+#include "io/standard_outputs.hpp"
+#include "scenario/scenario.hpp"
+
+namespace pdq::cli {
+
+void runCommand(const RunOptions& o) {
+  Comm comm(MPI_COMM_WORLD);
+  Scenario sc = loadScenario(o.input);
+  Problem& pb = sc.problem;
+  if (!o.out.empty()) pb.run.outDir = o.out;
+  if (o.steps >= 0) pb.run.steps = o.steps;
+  BondState bonds;
+  if (!o.restart.empty()) bonds = readRestart(o.restart, pb);
+  const double particles = static_cast<double>(pb.particles.size());
+  const std::string modelName = pb.modelName;
+  Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
+  if (!o.restart.empty()) sim.restoreBonds(std::move(bonds));
+  addStandardOutputs(sim, pb.output);
+  const bool talk = comm.root() && o.verbosity != Verbosity::Quiet;
+  sim.setup();
+  const std::string about = summary(sim, modelName, o.input);
+  if (talk && o.verbosity == Verbosity::Verbose) std::printf("%s", about.c_str());
+  Progress progress(talk, isatty(STDOUT_FILENO) != 0, particles, sim.config().firstStep,
+                    sim.config().steps, sim.context().dt());
+  while (sim.advance()) progress.update(sim.step());
+  sim.finish();
+  progress.finish(sim.step());
+  if (talk) {
+    if (!sim.context().stopReason().empty())
+      std::printf("stopped at step %ld: %s\n", sim.step(), sim.context().stopReason().c_str());
+    std::printf("output in %s\n", sim.config().outDir.c_str());
+    if (o.verbosity == Verbosity::Verbose) {
+      std::FILE* f = std::fopen((sim.config().outDir + "/timing.out").c_str(), "r");
+      if (f) {
+        char buf[512];
+        while (std::fgets(buf, sizeof buf, f)) std::fputs(buf, stdout);
+        std::fclose(f);
+      }
+    }
+  }
+}
+
+}  // namespace pdq::cli

@@ -1,0 +1,17 @@
+// pdq strength: the failure-load search of the scenario's model (scenario/strength.hpp).
+#include "cli/commands.hpp"
+#include "cli/options.hpp"
+#include "scenario/strength.hpp"
+
+namespace pdq::cli {
+
+void strengthCommand(const StrengthCommandOptions& o) {
+  Comm comm(MPI_COMM_WORLD);
+  Scenario sc = loadScenario(o.input);
+  const auto& driver = StrengthRegistry::get(sc.problem.modelName, o.input);
+  Params options = commandLineParams(o.set, "the strength search");
+  driver(sc, options, comm);
+  options.checkAllUsed();
+}
+
+}  // namespace pdq::cli

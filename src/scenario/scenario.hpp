@@ -1,0 +1,35 @@
+#pragma once
+// Scenario files (TOML; every field is documented in docs/scenario.md):
+//
+//     steps = 2000
+//     [model]                 name = "spring", then the model's parameters
+//     [particles]             fixed = "...dat", alter = "...dat"   (relative to this file)
+//                             or generator = "square" and the generator's parameters
+//     [[particles.set]]       attribute values by region (velocities, supports, loads)
+//     [decomposition]         procs, min_cell_size, margin, periodic, box_lo, box_hi, dimension
+//     [output]                dir, restart_every, history_every, history_ids, globals_every
+//     [output.paraview], [output.picture]
+//
+// Every value keeps its file and line; a key nobody reads is an error at its line with
+// the nearest known key suggested.
+#include <string>
+
+#include "engine/params.hpp"
+#include "scenario/problem.hpp"
+
+namespace pdq {
+
+struct Scenario {
+  Problem problem;
+  // The model's parameters as written (for `pdq prep`, which writes pdQUserInput.dat).
+  Params modelParams{"[model]"};
+};
+
+// Reads a TOML scenario: creates and configures the model, builds or reads the particles
+// and checks everything that can be checked before a run (InputError with file:line).
+Scenario readScenario(const std::string& path);
+
+// A scenario file, or a folder holding the thesis's .dat files (io/thesis_input.hpp).
+Scenario loadScenario(const std::string& path);
+
+}  // namespace pdq

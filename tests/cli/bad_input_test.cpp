@@ -1,0 +1,145 @@
+// Bad input (issue 2, item 11): each case must stop before step 0 with a message naming
+// the file and line and the problem, exit with code 1, and leave no output behind.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <functional>
+
+#include "pdq_process.hpp"
+#include "spring_case.hpp"
+
+namespace fs = std::filesystem;
+using namespace pdq::test;
+using testing::HasSubstr;
+
+namespace {
+
+// Replaces the first `from` in the file by `to`.
+void edit(const std::string& path, const std::string& from, const std::string& to) {
+  std::string text = readFile(path);
+  const auto at = text.find(from);
+  ASSERT_NE(at, std::string::npos) << from << " not in " << path;
+  text.replace(at, from.size(), to);
+  writeFile(path, text);
+}
+
+struct Case {
+  const char* name;
+  std::function<void(const std::string& dir)> spoil;
+  std::string expected;  // "file:line: problem" (part of the message)
+};
+
+// Line numbers below refer to the files springCase writes: the scenario's keys are at
+// steps 2, [model] 4, name 5, critical_stretch 6, dt 7, horizon 8, fixed 11, alter 12,
+// the first [[particles.set]] 14 (attribute 15), min_cell_size 33, [output] 35,
+// dir 36, restart_every 37, history_ids 40; particle i of the files is on line i + 2.
+const std::vector<Case> cases = {
+    {"malformed number", [](auto d) { edit(d + "/fixed.dat", "\n5 5 0 0", "\n5 5 O 0"); },
+     "fixed.dat:7: 'O' is not a number (column 3)"},
+    {"missing number", [](auto d) { edit(d + "/fixed.dat", "\n5 5 0 0", "\n5 5 0"); },
+     "fixed.dat:7: expected 4 numbers (id X Y Z), found 3"},
+    {"wrong attribute count", [](auto d) { edit(d + "/alter.dat", "\n9 9 0 0 0 0 0", "\n9 9 0 0 0 0"); },
+     "alter.dat:11: expected 7 numbers (id x y z vx vy vz), found 6"},
+    {"duplicate id", [](auto d) { edit(d + "/fixed.dat", "\n6 6 0 0", "\n5 6 0 0"); },
+     "fixed.dat:8: duplicate global ID 5"},
+    {"nan coordinate", [](auto d) { edit(d + "/fixed.dat", "\n7 7 0 0", "\n7 nan 0 0"); },
+     "fixed.dat:9: 'nan' is not a finite number (column 2)"},
+    {"inf coordinate", [](auto d) { edit(d + "/alter.dat", "\n8 8 0 0", "\n8 8 -inf 0"); },
+     "alter.dat:10: '-inf' is not a finite number (column 3)"},
+    {"missing file", [](auto d) { edit(d + "/lattice.toml", "\"fixed.dat\"", "\"fixd.dat\""); },
+     "lattice.toml:11: cannot read"},
+    {"unknown model", [](auto d) { edit(d + "/lattice.toml", "\"spring\"", "\"sprung\""); },
+     "lattice.toml:5: unknown model 'sprung' (did you mean 'spring'?)"},
+    {"unknown parameter", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dT = 0.05"); },
+     "lattice.toml:7: unknown parameter 'dT' for model 'spring' ([model]) (did you mean 'dt'?)"},
+    {"parameter out of range", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = -0.05"); },
+     "lattice.toml:7: parameter 'dt'"},
+    {"parameter not a number", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = \"fast\""); },
+     "lattice.toml:7: parameter 'dt' of model 'spring' ([model]): 'fast' is not a number"},
+    {"cell size below horizon",
+     [](auto d) { edit(d + "/lattice.toml", "min_cell_size = 1.5", "min_cell_size = 1.2"); },
+     "lattice.toml:33: min_cell_size 1.2 is below the model's horizon 1.5"},
+    {"not toml", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = 0.05 0.06"); },
+     "lattice.toml:7: not valid TOML"},
+    {"unknown table", [](auto d) { edit(d + "/lattice.toml", "[output]", "[outptu]"); },
+     "lattice.toml:35: unknown parameter 'outptu' for the scenario (did you mean 'output'?)"},
+    {"unknown output key",
+     [](auto d) { edit(d + "/lattice.toml", "restart_every", "restart_evry"); },
+     "lattice.toml:37: unknown parameter 'restart_evry' for [output] (did you mean "
+     "'restart_every'?)"},
+    {"unknown attribute", [](auto d) { edit(d + "/lattice.toml", "\"vx\"", "\"vq\""); },
+     "lattice.toml:15: the model has no attribute 'vq'"},
+    {"unknown history id", [](auto d) { edit(d + "/lattice.toml", "[0, 127]", "[0, 128]"); },
+     "lattice.toml:40: history_ids: 128 is not a particle's ID"},
+    {"missing steps", [](auto d) { edit(d + "/lattice.toml", "steps = 40", "stepz = 40"); },
+     "lattice.toml: missing steps"},
+};
+
+}  // namespace
+
+TEST(CliBadInput, ScenarioCasesNameFileAndLineAndWriteNothing) {
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const std::string dir = freshDir("bad_input");
+    const std::string sc = springCase(dir, 40);
+    c.spoil(dir);
+    const auto before = filesUnder(dir);
+    const auto r = runPdq({"run", sc}, dir);
+    EXPECT_EQ(r.code, 1) << r.all();
+    EXPECT_THAT(r.err, HasSubstr(c.expected));
+    EXPECT_THAT(r.err, HasSubstr("pdq: error: "));
+    EXPECT_EQ(filesUnder(dir), before) << "files were written";
+    EXPECT_FALSE(fs::exists(dir + "/out"));
+  }
+}
+
+TEST(CliBadInput, ThesisFilesNameFileAndLine) {
+  const std::string dir = freshDir("bad_input_dat");
+  const std::string sc = springCase(dir, 40);
+  ASSERT_EQ(runPdq({"prep", sc, "-o", "dat"}, dir).code, 0);
+  const std::string input = readFile(dir + "/dat/pdQInput.dat");
+  const std::string user = readFile(dir + "/dat/pdQUserInput.dat");
+  struct DatCase {
+    const char* name;
+    std::function<void()> spoil;
+    std::string expected;
+  };
+  const std::vector<DatCase> datCases = {
+      {"unknown parameter", [&] { edit(dir + "/dat/pdQUserInput.dat", "dt ", "dT "); },
+       "pdQUserInput.dat:4: unknown parameter 'dT'"},
+      {"unknown model", [&] { edit(dir + "/dat/pdQUserInput.dat", "spring", "sprin"); },
+       "pdQUserInput.dat:1: unknown model 'sprin' (did you mean 'spring'?)"},
+      {"malformed number", [&] { edit(dir + "/dat/pdQInput.dat", "0 0 0", "0 x 0"); },
+       "pdQInput.dat:1: 'x' is not a number"},
+      {"cell size below horizon", [&] { edit(dir + "/dat/pdQInput.dat", "1.5 ", "1.25 "); },
+       "pdQInput.dat:2: the minimum cell size 1.25 is below the model's horizon 1.5"},
+      {"missing file", [&] { fs::remove(dir + "/dat/ParticleAlterAttrs.dat"); },
+       "ParticleAlterAttrs.dat: cannot open the file"},
+  };
+  for (const auto& c : datCases) {
+    SCOPED_TRACE(c.name);
+    writeFile(dir + "/dat/pdQInput.dat", input);
+    writeFile(dir + "/dat/pdQUserInput.dat", user);
+    if (!fs::exists(dir + "/dat/ParticleAlterAttrs.dat")) {
+      ASSERT_EQ(runPdq({"prep", sc, "-o", "dat"}, dir).code, 0);
+    }
+    c.spoil();
+    const auto r = runPdq({"run", "dat", "--out", "out"}, dir);
+    EXPECT_EQ(r.code, 1) << r.all();
+    EXPECT_THAT(r.err, HasSubstr(c.expected));
+    EXPECT_FALSE(fs::exists(dir + "/out"));
+  }
+}
+
+TEST(CliBadInput, MissingScenarioAndPlugin) {
+  const std::string dir = freshDir("bad_input_missing");
+  auto r = runPdq({"run", "nowhere.toml"}, dir);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("nowhere.toml: cannot read the scenario"));
+  writeFile(dir + "/not_a_library.so", "text");
+  r = runPdq({"list", "--plugin", "not_a_library.so"}, dir);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("not_a_library.so: cannot load plugin"));
+  EXPECT_TRUE(filesUnder(dir) == std::vector<std::string>{"not_a_library.so"});
+}

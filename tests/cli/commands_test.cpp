@@ -1,0 +1,184 @@
+// Every pdq subcommand through the real executable: exit codes, messages, files written.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "pdq_process.hpp"
+#include "spring_case.hpp"
+
+namespace fs = std::filesystem;
+using pdq::test::filesUnder;
+using pdq::test::freshDir;
+using pdq::test::runPdq;
+using pdq::test::readFile;
+using pdq::test::springCase;
+using testing::HasSubstr;
+
+TEST(Cli, HelpListsEverySubcommand) {
+  const auto r = runPdq({"--help"});
+  EXPECT_EQ(r.code, 0) << r.all();
+  for (const char* cmd : {"run", "prep", "post", "strength", "info", "list"})
+    EXPECT_THAT(r.out, HasSubstr(cmd));
+  const auto run = runPdq({"run", "--help"});
+  EXPECT_EQ(run.code, 0);
+  for (const char* opt : {"--restart", "--plugin", "--steps", "--quiet", "--verbose", "--out"})
+    EXPECT_THAT(run.out, HasSubstr(opt));
+}
+
+TEST(Cli, UnknownCommandsAndOptionsSuggestTheNearest) {
+  auto r = runPdq({"rn", "x.toml"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("unknown command 'rn'"));
+  EXPECT_THAT(r.err, HasSubstr("did you mean 'run'"));
+  const std::string dir = freshDir("unknown_option");
+  const std::string sc = springCase(dir, 10);
+  r = runPdq({"run", sc, "--stpes", "3"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("unknown option '--stpes'"));
+  EXPECT_THAT(r.err, HasSubstr("did you mean '--steps'"));
+  r = runPdq({"post", "pictrue", sc});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("did you mean 'picture'"));
+  r = runPdq({"run"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("input"));
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}
+
+TEST(Cli, ListNamesModelsAndGenerators) {
+  const auto r = runPdq({"list"});
+  EXPECT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.out, HasSubstr("spring"));
+  EXPECT_THAT(r.out, HasSubstr("generators"));
+}
+
+TEST(Cli, InfoDescribesTheProblemAndWritesNothing) {
+  const std::string dir = freshDir("info");
+  const std::string sc = springCase(dir, 40);
+  const auto before = filesUnder(dir);
+  const auto r = runPdq({"info", sc, "--ranks", "4"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.out, HasSubstr("model         spring"));
+  EXPECT_THAT(r.out, HasSubstr("particles     128"));
+  // 16 x 8 lattice, horizon 1.5: 15*8 + 16*7 axial + 2*15*7 diagonal springs.
+  EXPECT_THAT(r.out, HasSubstr("bonds         442 "));
+  EXPECT_THAT(r.out, HasSubstr("time step     0.05"));
+  EXPECT_THAT(r.out, HasSubstr("dimension     2D"));
+  EXPECT_THAT(r.out, HasSubstr("on 4 ranks"));
+  EXPECT_THAT(r.out, HasSubstr("memory"));
+  EXPECT_EQ(filesUnder(dir), before);
+}
+
+TEST(Cli, RunWritesItsOutputsAndReportsProgress) {
+  const std::string dir = freshDir("run");
+  const std::string sc = springCase(dir, 40);
+  const auto r = runPdq({"run", sc}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  // Not a terminal: plain log lines, the last one at the last step.
+  EXPECT_THAT(r.out, HasSubstr("step 0/40"));
+  EXPECT_THAT(r.out, HasSubstr("step 40/40 (100%)"));
+  EXPECT_THAT(r.out, HasSubstr("particle-steps/s"));
+  const auto files = filesUnder(dir + "/out");
+  for (const char* f : {"ParticleAlterAttrs.10.rst", "ParticleAlterAttrs.40.rst",
+                        "timing.out", "debug.txt", "timehist.dat", "history.csv"})
+    EXPECT_NE(std::find(files.begin(), files.end(), f), files.end()) << f;
+  // history.csv: globals at steps 0, 5, ..., 40 and a header.
+  const std::string hist = readFile(dir + "/out/history.csv");
+  EXPECT_THAT(hist, HasSubstr("broken_bonds"));
+  // Springs of the upper half broke.
+  EXPECT_EQ(std::count(hist.begin(), hist.end(), '\n'), 10) << hist;
+
+  const auto quiet = runPdq({"run", sc, "-q", "--out", "quiet"}, dir);
+  EXPECT_EQ(quiet.code, 0) << quiet.all();
+  EXPECT_EQ(quiet.out, "");
+  const auto verbose = runPdq({"run", sc, "--verbose", "--out", "verbose", "--steps", "5"}, dir);
+  EXPECT_EQ(verbose.code, 0) << verbose.all();
+  EXPECT_THAT(verbose.out, HasSubstr("particles     128"));
+  EXPECT_THAT(verbose.out, HasSubstr("total"));  // the timing table
+  EXPECT_TRUE(fs::exists(dir + "/verbose/ParticleAlterAttrs.5.rst"));
+  const auto both = runPdq({"run", sc, "-q", "-v"}, dir);
+  EXPECT_EQ(both.code, 2);
+}
+
+TEST(Cli, RestartContinuesBitwise) {
+  const std::string dir = freshDir("restart");
+  const std::string sc = springCase(dir, 30);
+  ASSERT_EQ(runPdq({"run", sc, "-q"}, dir).code, 0);
+  const std::string whole = readFile(dir + "/out/ParticleAlterAttrs.30.rst");
+  const std::string wholeBonds = readFile(dir + "/out/Bonds.30.rst");
+  ASSERT_FALSE(whole.empty());
+  fs::copy(dir + "/out", dir + "/first");
+  fs::remove_all(dir + "/out");
+  const auto r = runPdq({"run", sc, "-q", "--restart", "first/ParticleAlterAttrs.10.rst",
+                      "--out", "second"},
+                     dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_EQ(readFile(dir + "/second/ParticleAlterAttrs.30.rst"), whole);
+  EXPECT_EQ(readFile(dir + "/second/Bonds.30.rst"), wholeBonds);
+
+  const auto past = runPdq({"run", sc, "--restart", "first/ParticleAlterAttrs.30.rst",
+                         "--steps", "20", "--out", "third"},
+                        dir);
+  EXPECT_EQ(past.code, 1);
+  EXPECT_THAT(past.err, HasSubstr("beyond the run's last step 20"));
+  EXPECT_FALSE(fs::exists(dir + "/third"));
+}
+
+TEST(Cli, PrepWritesTheThesisFiles) {
+  const std::string dir = freshDir("prep");
+  const std::string sc = springCase(dir, 20);
+  const auto r = runPdq({"prep", sc, "-o", "dat"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.out, HasSubstr("128 particles"));
+  EXPECT_EQ(filesUnder(dir + "/dat"),
+            (std::vector<std::string>{"ParticleAlterAttrs.dat", "ParticleFixedAttrs.dat",
+                                      "pdQInput.dat", "pdQUserInput.dat"}));
+  const std::string user = readFile(dir + "/dat/pdQUserInput.dat");
+  EXPECT_THAT(user, HasSubstr("model spring"));
+  EXPECT_THAT(user, HasSubstr("critical_stretch 0.02"));
+  // The velocities set by [[particles.set]] are in the alterable file: particle 127 is
+  // at X = 15 in the upper half, vx = 0.05 (15 - 7.5).
+  const std::string alter = readFile(dir + "/dat/ParticleAlterAttrs.dat");
+  EXPECT_THAT(alter, HasSubstr("\n127 15 7 0 0.375 "));
+}
+
+TEST(Cli, PostDrawsPicturesAndPlots) {
+  const std::string dir = freshDir("post");
+  const std::string sc = springCase(dir, 20);
+  ASSERT_EQ(runPdq({"run", sc, "-q"}, dir).code, 0);
+  auto r = runPdq({"post", "picture", sc, "--set", "colour_by=damage", "--set", "magnification=5"},
+               dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.out, HasSubstr("step 20"));
+  const std::string png = readFile(dir + "/out/damage_000020.png");
+  ASSERT_GT(png.size(), 1000u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  r = runPdq({"post", "picture", sc, "--restart", "out/ParticleAlterAttrs.10.rst", "-o",
+           "early.svg"},
+          dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(readFile(dir + "/early.svg"), HasSubstr("<svg"));
+  r = runPdq({"post", "picture", sc, "--set", "colour_by=damag"}, dir);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("did you mean 'damage'"));
+
+  r = runPdq({"post", "plot", "out/history.csv", "-x", "step", "-y", "broken_bonds", "-o",
+           "broken.png"},
+          dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_EQ(readFile(dir + "/broken.png").substr(1, 3), "PNG");
+  r = runPdq({"post", "plot", "out/history.csv", "-y", "brokn"}, dir);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("did you mean 'broken_bonds'"));
+  EXPECT_FALSE(fs::exists(dir + "/out/history.png"));
+}
+
+TEST(Cli, StrengthWithoutADriverSaysSo) {
+  const std::string dir = freshDir("strength");
+  const std::string sc = springCase(dir, 20);
+  const auto r = runPdq({"strength", sc}, dir);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("no strength driver is available for model 'spring'"));
+  EXPECT_FALSE(fs::exists(dir + "/out"));
+}

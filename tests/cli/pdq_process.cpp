@@ -1,0 +1,118 @@
+#include "pdq_process.hpp"
+
+#include <gtest/gtest.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+extern char** environ;
+
+namespace pdq::test {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// This process's environment minus the variables of its own MPI job.
+std::vector<std::string> cleanEnvironment() {
+  std::vector<std::string> env;
+  for (char** e = environ; *e; ++e) {
+    const std::string v = *e;
+    bool job = false;
+    for (const char* prefix : {"OMPI_", "PMIX_", "OPAL_", "PRTE_", "HYDRA_", "PMI_"})
+      job |= v.rfind(prefix, 0) == 0;
+    if (!job) env.push_back(v);
+  }
+  return env;
+}
+
+}  // namespace
+
+std::string sourceDir() {
+  const char* s = std::getenv("PDQ_SOURCE_DIR");
+  return s ? s : PDQ_SOURCE_DIR_DEFAULT;
+}
+
+Run runPdq(const std::vector<std::string>& args, const std::string& cwd, int ranks) {
+  const char* exe = std::getenv("PDQ_EXE");
+  std::string cmd;
+  if (!cwd.empty()) cmd += "cd " + quote(cwd) + " && ";
+  cmd += "exec ";
+  if (ranks > 0)
+    cmd += quote(PDQ_MPIEXEC) + " --oversubscribe --allow-run-as-root -np " +
+           std::to_string(ranks) + " ";
+  cmd += quote(exe ? exe : PDQ_EXE_DEFAULT);
+  for (const auto& a : args) cmd += " " + quote(a);
+  static int serial = 0;
+  const std::string base = fs::temp_directory_path().string() + "/pdq_cli_" +
+                           std::to_string(getpid()) + "_" + std::to_string(serial++);
+  const std::string outPath = base + ".out", errPath = base + ".err";
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  std::vector<std::string> env = cleanEnvironment();
+  std::vector<char*> envp;
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  std::string sh = "/bin/sh", dashC = "-c";
+  char* argv[] = {sh.data(), dashC.data(), cmd.data(), nullptr};
+  pid_t pid = 0;
+  Run r;
+  if (posix_spawn(&pid, "/bin/sh", &actions, nullptr, argv, envp.data()) == 0) {
+    int status = 0;
+    waitpid(pid, &status, 0);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  }
+  posix_spawn_file_actions_destroy(&actions);
+  r.out = readFile(outPath);
+  r.err = readFile(errPath);
+  fs::remove(outPath);
+  fs::remove(errPath);
+  return r;
+}
+
+std::string freshDir(const std::string& name) {
+  const fs::path d = fs::current_path() / ("cli_work") / name;
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d.string();
+}
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  fs::create_directories(fs::path(path).parent_path());
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+std::vector<std::string> filesUnder(const std::string& dir) {
+  std::vector<std::string> out;
+  if (!fs::exists(dir)) return out;
+  for (const auto& e : fs::recursive_directory_iterator(dir))
+    if (e.is_regular_file()) out.push_back(fs::relative(e.path(), dir).string());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}  // namespace pdq::test

@@ -1,0 +1,27 @@
+#pragma once
+// Running the real pdq executable (env PDQ_EXE) from a test, alone or under mpirun, with
+// its exit code, standard output and standard error. The child gets the environment
+// without this test's own MPI job variables, so it starts as a job of its own.
+#include <string>
+#include <vector>
+
+namespace pdq::test {
+
+struct Run {
+  int code = -1;
+  std::string out, err;
+  std::string all() const { return out + err; }
+};
+
+// `pdq args...` in `cwd` (empty: the current folder); ranks > 0: under mpirun -np ranks.
+Run runPdq(const std::vector<std::string>& args, const std::string& cwd = "", int ranks = 0);
+
+// A new empty folder for one test.
+std::string freshDir(const std::string& name);
+std::string readFile(const std::string& path);
+void writeFile(const std::string& path, const std::string& text);
+// Every file under `dir` (relative paths, sorted).
+std::vector<std::string> filesUnder(const std::string& dir);
+std::string sourceDir();  // env PDQ_SOURCE_DIR
+
+}  // namespace pdq::test
