@@ -110,7 +110,6 @@ int block(int argc, char** argv, Comm& comm) {
   if (!dir.empty() && comm.root()) lammps::writeLammps(bl, model, steps, dir, ps);
   RunConfig cfg;
   cfg.steps = steps;
-  cfg.finalRestart = false;
   cfg.outDir = dir.empty() ? "pd_block_out" : dir + "/pdq_out";
   const std::size_t nParticles = ps.size();
   Simulation sim(std::move(m), std::move(ps), cfg, comm);

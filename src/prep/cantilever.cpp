@@ -51,7 +51,6 @@ CantileverProblem thesisCantilever(const CantileverSpec& spec) {
   pb.monitored = ps.gid.back();
   pb.run.minCellSize = spec.cellFactor * delta;
   pb.run.steps = spec.steps;
-  pb.run.finalRestart = false;
   return pb;
 }
 

@@ -267,8 +267,6 @@ void readOutput(const toml::table& root, const std::string& file, Problem& pb) {
   if (out.historyEvery > 0 && out.historyIds.empty())
     throw InputError(file, p.raw("history_every")->line,
                      "history_every needs history_ids (the particles to follow)");
-  pb.run.restartEvery = out.restartEvery;
-  pb.run.finalRestart = out.finalRestart;
   if (t) {
     if (const toml::table* v = subTable(*t, "paraview", file)) {
       p.accept("paraview");

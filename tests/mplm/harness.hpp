@@ -25,7 +25,6 @@ inline std::unique_ptr<Simulation> simulation(Comm& comm, const Params& p, Parti
   RunConfig cfg;
   cfg.steps = steps;
   cfg.outDir = "mplm_test_out";
-  cfg.finalRestart = false;
   auto sim = std::make_unique<Simulation>(std::move(model), std::move(ps), cfg, comm);
   sim->setup();
   return sim;

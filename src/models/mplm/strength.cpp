@@ -59,7 +59,6 @@ std::unique_ptr<Simulation> makeSimulation(const Example& ex, const Params& p, l
   RunConfig cfg;
   cfg.steps = steps;
   cfg.outDir = "strength_out";
-  cfg.finalRestart = false;
   auto sim = std::make_unique<Simulation>(std::move(model), ex.particles, cfg, comm);
   sim->setup();
   return sim;
