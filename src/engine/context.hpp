@@ -29,6 +29,10 @@ class Context {
   void setDt(double dt) { dt_ = dt; }
   int dim() const { return cube_.decomposition().dim(); }
   const Domain& domain() const { return cube_.decomposition().domain(); }
+  // The smallest cell edge: every pair closer than this is among a particle's nearby
+  // cells, and the engine shuffles before any particle moves more than
+  // (cellSize - horizon) / 2, so a pair list of this radius stays complete until then.
+  double cellSize() const { return cube_.decomposition().minActiveCellSize(); }
 
   // Every particle j near owned particle i (same or adjacent cell), canonical order.
   template <class F>

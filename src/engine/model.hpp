@@ -35,6 +35,9 @@ class Model {
   // Radius beyond which two particles never interact (at the positions cells are built
   // from: reference positions for non-shuffling models, current ones otherwise).
   virtual double horizon() const = 0;
+  // The minimum cell size when the input sets none: the horizon, or more for a model that
+  // keeps pair lists with a skin (cells >= cut-off + skin).
+  virtual double minCellSize() const { return horizon(); }
   // True when particles change neighbours (molecular dynamics): the engine then shuffles
   // particles between cells and ranks, and bins them by current position.
   virtual bool shuffles() const { return false; }

@@ -73,7 +73,7 @@ void Simulation::setup() {
   if (setUp_) return;
   Timers::Scope t(timers_, Phase::Setup);
   const double horizon = model_->horizon();
-  const double minCell = cfg_.minCellSize > 0 ? cfg_.minCellSize : horizon;
+  const double minCell = cfg_.minCellSize > 0 ? cfg_.minCellSize : model_->minCellSize();
   if (!(horizon > 0)) throw InputError(cfg_.source, 0, "the model's horizon must be positive");
   if (minCell < horizon) {
     std::ostringstream os;

@@ -24,7 +24,7 @@ namespace pdq {
 
 struct RunConfig {
   std::array<int, 3> procs{0, 0, 0};  // processors per axis; 0 = automatic
-  double minCellSize = 0;             // 0 = the model's horizon
+  double minCellSize = 0;             // 0 = the model's own (Model::minCellSize)
   double margin = -1;                 // Δ around the particles' bounding box; <0 = horizon
   std::array<bool, 3> periodic{false, false, false};
   std::array<double, 3> boxLo{}, boxHi{};  // the box along periodic axes

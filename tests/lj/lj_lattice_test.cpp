@@ -145,26 +145,6 @@ TEST_P(LjForce, IsMinusTheGradientOfThePotentialEnergy) {
 
 INSTANTIATE_TEST_SUITE_P(Shifts, LjForce, ::testing::Values("none", "energy", "force"));
 
-// Cells larger than cutoff + skin let atoms move further between shuffles than the Verlet
-// lists allow: the run must stop with an error naming the required cell size rather than
-// go on with stale lists.
-TEST(LjConfiguration, CellsLargerThanCutoffPlusSkinAreAnError) {
-  Comm comm(MPI_COMM_WORLD);
-  Melt m;
-  m.cells = 8;          // box 13.4: 4 cells of 3.36 for cutoff + skin = 2.8 ...
-  m.minCellSize = 4.4;  // ... but 3 cells of 4.48 here
-  m.steps = 100;
-  auto sim = makeMelt(m, comm);
-  try {
-    while (sim->advance()) {
-    }
-    ADD_FAILURE() << "the run ended without noticing its stale neighbour lists";
-  } catch (const RunError& e) {
-    EXPECT_NE(std::string(e.what()).find("minimum cell size must be cutoff + skin = 2.8"),
-              std::string::npos)
-        << e.what();
-  }
-}
 
 }  // namespace
 }  // namespace pdq

@@ -2,10 +2,10 @@
 // first shuffling model: particles wander between cells and ranks.
 //
 //   neighbours   a Verlet list per owned particle, rebuilt after every engine shuffle.
-//                The engine declares the horizon rc and bins particles in cells of at
-//                least rc + skin; it shuffles once some particle moved more than
-//                (cell - rc) / 2 since the last rebuild, so a list of every particle
-//                within one cell edge at the rebuild holds every pair closer than rc
+//                The model's horizon is rc and it asks for cells of at least rc + skin;
+//                the engine shuffles once some particle moved more than (cell - rc) / 2
+//                since the last rebuild, so a list of every particle within one cell
+//                edge (ctx.cellSize()) at the rebuild holds every pair closer than rc
 //                until the next one. Lists are sorted by global ID (see verlet_list.hpp).
 //   force        full lists: each owned particle sums its own force, so threads need no
 //                atomics and the ghosts need no forces sent back.
@@ -20,10 +20,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <vector>
 
-#include "engine/error.hpp"
 #include "engine/model.hpp"
 #include "models/lj/kernel.hpp"
 #include "models/lj/pair_lj.hpp"
@@ -53,17 +51,14 @@ class LennardJones final : public Model {
     return Schema::make({}, {"vx", "vy", "vz"}, {"fx", "fy", "fz"});
   }
   double horizon() const override { return pair_.rc; }
+  double minCellSize() const override { return pair_.rc + skin_; }
   bool shuffles() const override { return true; }
 
   void setup(Context& ctx) override { ctx.setDt(dt_); }
   void prepare(Context& ctx) override { buildLists(ctx); }
-  void neighboursChanged(Context& ctx) override {
-    checkNoBreach(ctx);
-    buildLists(ctx);
-  }
+  void neighboursChanged(Context& ctx) override { buildLists(ctx); }
 
   void force(Context& ctx) override {
-    noteDisplacement(ctx);
     evaluate(ctx.particles, forces(ctx.particles), nullptr);
   }
 
@@ -139,61 +134,14 @@ class LennardJones final : public Model {
   }
   static double* forces(Particles& P) { return P.owned() ? P.integ(0) : nullptr; }
 
-  // The list radius: the smallest cell edge of the engine's lattice, which divides each
-  // active axis of the domain into whole cells no smaller than cutoff + skin (the run's
-  // minimum cell size). The engine shuffles before any particle moves further than
-  // (radius - rc) / 2 from where the list saw it.
-  double listRadius(const Context& ctx) const {
-    const Domain& d = ctx.domain();
-    double r = INFINITY;
-    for (int a = 0; a < ctx.dim(); ++a) {
-      const double L = d.length(a);
-      const int cells = std::max(1, static_cast<int>(std::floor(L / (pair_.rc + skin_))));
-      r = std::min(r, L / cells);
-    }
-    return r;
-  }
-
   void buildLists(Context& ctx) {
-    radius_ = listRadius(ctx);
-    lists_.build(ctx, radius_);
-    const Particles& P = ctx.particles;
-    listPos_.resize(3 * P.owned());
-    for (std::size_t i = 0; i < P.owned(); ++i) std::copy_n(P.alter(i), 3, &listPos_[3 * i]);
-  }
-
-  // The lists hold every pair within rc only while no particle moved further than
-  // (radius - rc) / 2 since they were built; the engine shuffles before that happens when
-  // the run's minimum cell size is cutoff + skin. Each step notes, without communicating,
-  // whether that held on this rank; the next shuffle (every run ends with one) turns a
-  // breach on any rank into an error, so a misconfigured run never ends quietly.
-  void noteDisplacement(const Context& ctx) {
-    const Particles& P = ctx.particles;
-    const double limit = sq((radius_ - pair_.rc) / 2);
-    double m = 0;
-    for (std::size_t i = 0; i < P.owned(); ++i) {
-      const double* x = P.alter(i);
-      const double* x0 = &listPos_[3 * i];
-      m = std::max(m, sq(x[X] - x0[0]) + sq(x[Y] - x0[1]) + sq(x[Z] - x0[2]));
-    }
-    if (m > limit && !(breach_ > 0)) breach_ = std::sqrt(m), breachStep_ = ctx.step();
-  }
-  void checkNoBreach(Context& ctx) {
-    if (!ctx.any(breach_ > 0)) return;
-    std::ostringstream os;
-    os << "the neighbour lists went stale: a particle moved further than (cell - cutoff) / 2 "
-          "without the engine shuffling";
-    if (breach_ > 0) os << " (" << breach_ << " by step " << breachStep_ << " on this rank)";
-    os << "; the run's minimum cell size must be cutoff + skin = " << pair_.rc + skin_;
-    throw RunError(os.str());
+    lists_.build(ctx, ctx.cellSize());
   }
 
   PairLJ pair_;
-  double mass_ = 1, skin_ = 0.3, dt_ = 0.005, radius_ = 0;
-  double breach_ = 0;  // displacement that made the lists stale on this rank (0: none)
-  long breachStep_ = 0;
+  double mass_ = 1, skin_ = 0.3, dt_ = 0.005;
   VerletList lists_;
-  std::vector<double> listPos_, energy_;
+  std::vector<double> energy_;
   mutable std::vector<KernelScratch> scratch_;  // one per OpenMP thread
   mutable std::vector<double> pos_;             // packed positions for the kernel
 };
