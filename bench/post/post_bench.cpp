@@ -30,7 +30,6 @@ int main(int argc, char** argv) {
     for (int i = 0; i < nx; ++i) ps.add(static_cast<pdq::Gid>(j) * nx + i, i, j, 0);
   pdq::RunConfig cfg;
   cfg.outDir = dir;
-  cfg.finalRestart = false;
   pdq::Simulation sim(std::move(model), std::move(ps), cfg, comm);
   sim.setup();
   // Break a "crack" of bonds so the picture has something to draw.

@@ -39,6 +39,7 @@ class Bonds {
 
   // --- used by the engine ---
   void resetEmpty(std::size_t nOwned);
+  void discardPending() { pending_.clear(); }
   // New owned particle k takes old particle perm[k]'s bonds (departed ones are dropped).
   void permute(const std::vector<std::size_t>& perm);
   // Appends the bonds of one newly arrived owned particle (at the end of the owned range).

@@ -25,6 +25,8 @@ class Output {
   // Due at multiples of `every` (0: never during the run) and, if finalToo(), at the end.
   virtual bool due(long step) const { return every_ > 0 && step % every_ == 0; }
   virtual bool atEnd() const { return false; }
+  // True for outputs a run can restart from (the engine shuffles before writing them).
+  virtual bool capturesState() const { return false; }
   virtual void write(OutputContext& out) = 0;
   // Called once after the last step (rename temporary files into place, etc.).
   virtual void finish(OutputContext&) {}

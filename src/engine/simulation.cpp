@@ -93,8 +93,18 @@ void Simulation::setup() {
   ctx_->setStep(step_);
   ctx_->setSteps(cfg_.steps);
   model_->setup(*ctx_);
+  if (bondState_) {
+    // A restart brings its bonds: the saved list replaces what setup built from the
+    // (possibly moved) particles, so nothing is lost or added on the way.
+    bonds_.discardPending();
+    std::map<Gid, std::size_t> local;
+    for (std::size_t i = 0; i < particles_.owned(); ++i) local[particles_.gid(i)] = i;
+    for (std::size_t k = 0; k < bondState_->owner.size(); ++k) {
+      auto it = local.find(bondState_->owner[k]);
+      if (it != local.end()) bonds_.add(it->second, bondState_->partner[k]);
+    }
+  }
   bonds_.finish(particles_.owned());
-  cube_->remapBonds(step_);
   if (bondState_) {
     const BondState& s = *bondState_;
     const int nB = bonds_.nAttr();
@@ -102,17 +112,13 @@ void Simulation::setup() {
     for (std::size_t k = 0; k < s.owner.size(); ++k) where[{s.owner[k], s.partner[k]}] = k;
     for (std::size_t i = 0; i < particles_.owned(); ++i)
       for (std::size_t b = bonds_.begin(i); b < bonds_.end(i); ++b) {
-        auto it = where.find({particles_.gid(i), bonds_.partnerGid(b)});
-        if (it == where.end()) {
-          std::ostringstream os;
-          os << "the restart has no state for the bond between particles " << particles_.gid(i)
-             << " and " << bonds_.partnerGid(b);
-          throw InputError(cfg_.source, 0, os.str());
-        }
-        std::copy_n(&s.attrs[it->second * nB], nB, bonds_.attr(b));
+        const std::size_t k = where.at({particles_.gid(i), bonds_.partnerGid(b)});
+        std::copy_n(&s.attrs[k * nB], nB, bonds_.attr(b));
+        if (s.dead[k]) bonds_.kill(b);
       }
     bondState_.reset();
   }
+  cube_->remapBonds(step_);  // after restored dead flags: a dead bond's partner may be gone
   model_->prepare(*ctx_);
   cube_->halo();  // setup and prepare may have changed alterable attributes
   if (!(ctx_->dt() > 0)) throw InputError(cfg_.source, 0, "the model set no positive time step");
@@ -140,10 +146,13 @@ bool Simulation::advance() {
   }
   if (model_->shuffles()) {
     // Shuffle once some particle may have moved far enough to change neighbours, and at
-    // restart steps, so a restarted run starts from the same cells as the original.
-    const bool restartDue = cfg_.restartEvery > 0 && step_ % cfg_.restartEvery == 0;
+    // steps whose state is saved for a restart, so that a restarted run starts from the
+    // same cells (and periodic wraps) as the original and continues bit for bit.
+    bool saving = false;
+    for (const auto& o : outputs_)
+      saving |= o->capturesState() && (o->due(step_) || (step_ == cfg_.steps && o->atEnd()));
     const double moved = comm_.max(cube_->maxDisplacementSinceRebuild());
-    if (moved > slack_ || restartDue || step_ == cfg_.steps) {
+    if (moved > slack_ || saving) {
       Timers::Scope t(timers_, Phase::Shuffle);
       cube_->shuffle(step_);
       model_->neighboursChanged(*ctx_);

@@ -33,14 +33,13 @@ struct RunConfig {
   long firstStep = 0;  // a restarted run continues from here
   std::string outDir = ".";
   std::string source = "input";  // file named in configuration errors
-  long restartEvery = 0;         // ParticleAlterAttrs.<step>.rst every N steps (and at the end)
-  bool finalRestart = true;
   long checkEvery = 100;  // scan for non-finite positions every N steps
 };
 
 // Bond attributes to restore after setup (a restart), keyed by (owner, partner) IDs.
 struct BondState {
   std::vector<Gid> owner, partner;
+  std::vector<std::uint8_t> dead;
   std::vector<double> attrs;  // nBondAttr per bond
 };
 

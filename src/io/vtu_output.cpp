@@ -95,11 +95,14 @@ vtu::Piece bondPiece(const Context& ctx) {
   for (std::size_t i = 0; i < n; ++i) rows[i] = i;
   std::unordered_map<std::size_t, std::int64_t> ghostPoint;
   vtu::Piece piece;
-  std::vector<vtu::Array> attrs(B.nAttr());
-  for (int k = 0; k < B.nAttr(); ++k) attrs[k] = {P.schema().bond[k], 1, false, {}, {}};
+  // Cell data: the engine's broken flag, then the model's bond attributes.
+  std::vector<vtu::Array> attrs(B.nAttr() + 1);
+  attrs[0] = {"broken", 1, false, {}, {}};
+  for (int k = 0; k < B.nAttr(); ++k) attrs[k + 1] = {P.schema().bond[k], 1, false, {}, {}};
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
       if (B.partnerGid(b) < P.gid(i)) continue;  // the other end writes it
+      if (B.partner(b) < 0) continue;            // broken, and the partner has gone
       const std::size_t j = static_cast<std::size_t>(B.partner(b));
       std::int64_t pj = static_cast<std::int64_t>(j);
       if (j >= n) {
@@ -108,7 +111,8 @@ vtu::Piece bondPiece(const Context& ctx) {
         pj = it->second;
       }
       piece.addCell(vtu::Line, {static_cast<std::int64_t>(i), pj});
-      for (int k = 0; k < B.nAttr(); ++k) attrs[k].f64.push_back(B.attr(b)[k]);
+      attrs[0].f64.push_back(B.alive(b) ? 0.0 : 1.0);
+      for (int k = 0; k < B.nAttr(); ++k) attrs[k + 1].f64.push_back(B.attr(b)[k]);
     }
   piece.points.reserve(3 * rows.size());
   for (std::size_t i : rows) piece.points.insert(piece.points.end(), P.alter(i), P.alter(i) + 3);

@@ -58,7 +58,9 @@ std::string PictureOutput::fileName(const PictureOptions& o, long step) {
 void PictureOutput::write(OutputContext& out) {
   if (!checked_) {  // every rank alike, before any collective call
     const Schema& schema = out.ctx.particles.schema();
-    checkRequest(opt_.request, quantityNames(schema, out.model), schema.bond);
+    std::vector<std::string> bondNames{"broken"};  // the engine's flag, then the model's
+    bondNames.insert(bondNames.end(), schema.bond.begin(), schema.bond.end());
+    checkRequest(opt_.request, quantityNames(schema, out.model), bondNames);
     checked_ = true;
   }
   const Snapshot s = gatherSnapshot(out.ctx, out.model, out.comm, out.step);

@@ -28,7 +28,9 @@ class Writer {
 std::string damageName(const PictureRequest& r, const std::vector<std::string>& bondNames) {
   if (r.bondDamage == "none") return "";
   if (!r.bondDamage.empty()) return r.bondDamage;
-  return std::find(bondNames.begin(), bondNames.end(), "damage") != bondNames.end() ? "damage" : "";
+  // A model's own damage measure if it has one, else the engine's broken-bond flag.
+  return std::find(bondNames.begin(), bondNames.end(), "damage") != bondNames.end() ? "damage"
+                                                                                    : "broken";
 }
 
 }  // namespace
@@ -56,10 +58,15 @@ Snapshot gatherSnapshot(const Context& ctx, const Model& model, const Comm& comm
 
   // Fixed-size records: a particle is its ID then 6 + nq doubles (X, x, quantities); a
   // bond is its two IDs, the far end's position as this rank sees it, its attributes.
-  const std::size_t pRec = 8 * (7 + nq), bRec = 8 * (5 + nB);
+  // The first bond attribute is the engine's broken flag; bonds whose dead partner has
+  // left the procCube are not drawn.
+  const std::size_t pRec = 8 * (7 + nq), bRec = 8 * (6 + nB);
+  auto written = [&](std::size_t i, std::size_t b) {
+    return B.partnerGid(b) > P.gid(i) && B.partner(b) >= 0;
+  };
   std::uint64_t nb = 0;
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t b = B.begin(i); b < B.end(i); ++b) nb += B.partnerGid(b) > P.gid(i);
+    for (std::size_t b = B.begin(i); b < B.end(i); ++b) nb += written(i, b);
   Writer w;
   w.bytes.reserve(16 + n * pRec + nb * bRec);
   w.put<std::uint64_t>(n);
@@ -74,10 +81,11 @@ Snapshot gatherSnapshot(const Context& ctx, const Model& model, const Comm& comm
   w.put(nb);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-      if (B.partnerGid(b) < P.gid(i)) continue;
+      if (!written(i, b)) continue;
       w.put(P.gid(i));
       w.put(B.partnerGid(b));
       w.put(P.alter(B.partner(b)), 3);
+      w.put(B.alive(b) ? 0.0 : 1.0);
       w.put(B.attr(b), nB);
     }
   const auto blocks = comm.gather(w.bytes);
@@ -87,7 +95,8 @@ Snapshot gatherSnapshot(const Context& ctx, const Model& model, const Comm& comm
   s.time = static_cast<double>(step) * ctx.dt();
   if (!comm.root()) return s;
   s.names = names;
-  s.bondNames = S.bond;
+  s.bondNames = {"broken"};
+  s.bondNames.insert(s.bondNames.end(), S.bond.begin(), S.bond.end());
   // The records are read in place, ordered through pointers.
   std::vector<const char*> prt, bnd;
   for (const auto& block : blocks) {
@@ -128,14 +137,14 @@ Snapshot gatherSnapshot(const Context& ctx, const Model& model, const Comm& comm
     return static_cast<std::size_t>(std::lower_bound(s.id.begin(), s.id.end(), g) - s.id.begin());
   };
   s.bonds.reserve(bnd.size());
-  s.bondAttrs.reserve(bnd.size() * nB);
+  s.bondAttrs.reserve(bnd.size() * (nB + 1));
   for (const char* rec : bnd) {
     const std::size_t a = index(gid(rec, 0)), b = index(gid(rec, 1));
     bool image = false;  // the far end is a periodic image, not where the particle is
     for (int d = 0; d < 3; ++d) image |= word(rec, 2 + d, 0.0) != s.current[3 * b + d];
     if (image) continue;
     s.bonds.push_back({a, b});
-    for (int k = 0; k < nB; ++k) s.bondAttrs.push_back(word(rec, 5 + k, 0.0));
+    for (int k = 0; k <= nB; ++k) s.bondAttrs.push_back(word(rec, 5 + k, 0.0));
   }
   return s;
 }

@@ -35,7 +35,6 @@ test::State runSpring(MPI_Comm c, const Layout& l, bool shuffle, long steps) {
   RunConfig cfg;
   cfg.procs = l.grid;
   cfg.steps = steps;
-  cfg.finalRestart = false;
   cfg.outDir = "out_determinism";
   if (shuffle) {
     cfg.minCellSize = 2.0;

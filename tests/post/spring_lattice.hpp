@@ -38,7 +38,6 @@ inline std::unique_ptr<Simulation> springLattice(Comm& comm, int nx, int ny, lon
   cfg.steps = steps;
   cfg.firstStep = firstStep;
   cfg.outDir = outDir;
-  cfg.finalRestart = false;
   return std::make_unique<Simulation>(std::move(model), std::move(ps), cfg, comm);
 }
 
@@ -79,9 +78,10 @@ inline std::map<std::pair<long, long>, double> gatherBonds(Simulation& sim) {
     for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
       const long a = P.gid(i), c = B.partnerGid(b);
       if (c < a) continue;
+      const double broken = B.alive(b) ? 0.0 : 1.0;
       put(&a);
       put(&c);
-      put(B.attr(b));
+      put(&broken);
     }
   std::map<std::pair<long, long>, double> all;
   for (const auto& b : sim.comm().gather(block))

@@ -1,0 +1,172 @@
+#include "io/restart.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+#include "engine/atomic_file.hpp"
+#include "engine/error.hpp"
+#include "engine/model.hpp"
+#include "io/gather.hpp"
+#include "io/text_table.hpp"
+
+namespace pdq {
+
+static void appendNumber(std::string& line, double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, " %.17g", v);
+  line += buf;
+}
+
+std::string restartPath(const std::string& dir, long step) {
+  return dir + "/ParticleAlterAttrs." + std::to_string(step) + ".rst";
+}
+
+std::string bondRestartPath(const std::string& dir, long step) {
+  return dir + "/Bonds." + std::to_string(step) + ".rst";
+}
+
+std::string fixedRestartPath(const std::string& dir, long step) {
+  return dir + "/ParticleFixedAttrs." + std::to_string(step) + ".rst";
+}
+
+// A shuffling model in a periodic box has its reference positions wrapped with its
+// current ones; only then do the fixed attributes change, and only then are they saved.
+static bool fixedChange(const OutputContext& out) {
+  const auto& p = out.ctx.domain().periodic;
+  return out.model.shuffles() && (p[0] || p[1] || p[2]);
+}
+
+static void writeRows(const std::string& path, const std::string& header,
+                      const std::vector<double>& rows, int width) {
+  AtomicFile f(path);
+  f.stream() << header;
+  std::string line;
+  for (std::size_t r = 0; r < rows.size() / width; ++r) {
+    const double* row = &rows[r * width];
+    line = std::to_string(static_cast<Gid>(row[0]));
+    for (int c = 1; c < width; ++c) appendNumber(line, row[c]);
+    f.stream() << line << "\n";
+  }
+  f.commit();
+}
+
+void RestartOutput::write(OutputContext& out) {
+  if (out.step == lastWritten_) return;
+  lastWritten_ = out.step;
+  const Particles& P = out.ctx.particles;
+  const Bonds& B = out.ctx.bonds;
+  const Schema& s = P.schema();
+  const int nA = s.nAlter(), nB = B.nAttr(), nF = s.nFixed();
+  const bool withFixed = fixedChange(out);
+  std::vector<double> rows, brows, frows;
+  for (std::size_t i = 0; i < P.owned(); ++i) {
+    rows.push_back(static_cast<double>(P.gid(i)));
+    rows.insert(rows.end(), P.alter(i), P.alter(i) + nA);
+    if (withFixed) {
+      frows.push_back(static_cast<double>(P.gid(i)));
+      frows.insert(frows.end(), P.fixed(i), P.fixed(i) + nF);
+    }
+    for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+      brows.push_back(static_cast<double>(P.gid(i)));
+      brows.push_back(static_cast<double>(B.partnerGid(b)));
+      brows.push_back(B.alive(b) ? 0 : 1);
+      brows.insert(brows.end(), B.attr(b), B.attr(b) + nB);
+    }
+  }
+  const auto all = gatherSortedRows(out.comm, rows, 1 + nA);
+  const long nBondsTotal = out.comm.sum(static_cast<long>(B.count()));
+  const auto allBonds = nBondsTotal ? gatherSortedRows(out.comm, brows, 3 + nB, 2) : std::vector<double>{};
+  const auto allFixed = withFixed ? gatherSortedRows(out.comm, frows, 1 + nF) : std::vector<double>{};
+  if (!out.comm.root()) return;
+  std::string line;
+  if (withFixed) {
+    std::string header = "# pdq fixed attributes: step " + std::to_string(out.step) + "\n# columns: id";
+    for (const auto& n : s.fixed) header += " " + n;
+    writeRows(fixedRestartPath(out.outDir, out.step), header + "\n", allFixed, 1 + nF);
+  }
+  if (nBondsTotal) {  // bonds first: a particle file always has its bond file beside it
+    AtomicFile f(bondRestartPath(out.outDir, out.step));
+    f.stream() << "# pdq bonds: step " << out.step << "\n# columns: id partner dead";
+    for (const auto& n : s.bond) f.stream() << " " << n;
+    f.stream() << "\n";
+    for (std::size_t r = 0; r < allBonds.size() / (3 + nB); ++r) {
+      const double* row = &allBonds[r * (3 + nB)];
+      line = std::to_string(static_cast<Gid>(row[0])) + " " + std::to_string(static_cast<Gid>(row[1])) +
+             (row[2] != 0 ? " 1" : " 0");
+      for (int c = 0; c < nB; ++c) appendNumber(line, row[3 + c]);
+      f.stream() << line << "\n";
+    }
+    f.commit();
+  }
+  std::ostringstream header;
+  header << "# pdq restart: step " << out.step << " time " << out.ctx.time() << "\n# columns: id";
+  for (const auto& n : s.alter) header << " " << n;
+  writeRows(restartPath(out.outDir, out.step), header.str() + "\n", all, 1 + nA);
+}
+
+static long stepOfHeader(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path, 0, "cannot open the restart file (missing or unreadable)");
+  std::string line;
+  std::getline(in, line);
+  const std::string tag = "# pdq restart: step ";
+  if (line.rfind(tag, 0) != 0)
+    throw InputError(path, 1, "not a pdq restart file (the first line must be '" + tag + "N ...')");
+  std::istringstream s(line.substr(tag.size()));
+  long step = -1;
+  if (!(s >> step) || step < 0) throw InputError(path, 1, "the restart step is not a whole number");
+  return step;
+}
+
+BondState readRestart(const std::string& path, Problem& pb) {
+  const long step = stepOfHeader(path);
+  const Schema schema = pb.model->schema();
+  ParticleSet& ps = pb.particles;
+  std::unordered_map<Gid, std::size_t> index;
+  for (std::size_t k = 0; k < ps.size(); ++k) index.emplace(ps.gid[k], k);
+  std::vector<char> seen(ps.size(), 0);
+  for (const auto& r : readNumberTable(path, 1 + ps.nAlter)) {
+    const Gid id = static_cast<Gid>(r.values[0]);
+    auto it = index.find(id);
+    if (it == index.end() || static_cast<double>(id) != r.values[0])
+      throw InputError(path, r.line, "particle " + std::to_string(id) + " is not in the problem");
+    if (seen[it->second]++)
+      throw InputError(path, r.line, "duplicate global ID " + std::to_string(id));
+    std::copy(r.values.begin() + 1, r.values.end(), ps.alterRow(it->second));
+  }
+  for (std::size_t k = 0; k < seen.size(); ++k)
+    if (!seen[k])
+      throw InputError(path, 0, "particle " + std::to_string(ps.gid[k]) + " is missing");
+  pb.run.firstStep = step;
+  if (step > pb.run.steps) {
+    std::ostringstream os;
+    os << "the restart is at step " << step << ", beyond the run's last step " << pb.run.steps;
+    throw InputError(path, 1, os.str());
+  }
+  BondState bonds;
+  std::string dir = std::filesystem::path(path).parent_path().string();
+  if (dir.empty()) dir = ".";
+  const std::string fpath = fixedRestartPath(dir, step);
+  if (std::filesystem::exists(fpath))
+    for (const auto& r : readNumberTable(fpath, 1 + ps.nFixed)) {
+      auto it = index.find(static_cast<Gid>(r.values[0]));
+      if (it == index.end())
+        throw InputError(fpath, r.line, "a particle that is not in the problem");
+      std::copy(r.values.begin() + 1, r.values.end(), ps.fixedRow(it->second));
+    }
+  const std::string bpath = bondRestartPath(dir, step);
+  if (!std::filesystem::exists(bpath)) return bonds;
+  const int nB = schema.nBond();
+  for (const auto& r : readNumberTable(bpath, 3 + nB)) {
+    bonds.owner.push_back(static_cast<Gid>(r.values[0]));
+    bonds.partner.push_back(static_cast<Gid>(r.values[1]));
+    bonds.dead.push_back(r.values[2] != 0 ? 1 : 0);
+    bonds.attrs.insert(bonds.attrs.end(), r.values.begin() + 3, r.values.end());
+  }
+  return bonds;
+}
+
+}  // namespace pdq

@@ -1,0 +1,36 @@
+#pragma once
+// Restart files. ParticleAlterAttrs.<step>.rst has the format of ParticleAlterAttrs.dat
+// (global ID, current x y z, alterable attributes; 17 significant digits, so every double
+// reads back to the same bits), with '#' header lines naming the step and the columns.
+// Bonds.<step>.rst holds every bond's state (owner ID, partner ID, dead flag, bond
+// attributes), so damage survives a restart. A run restarted from a step continues
+// bitwise as the uninterrupted run would have.
+#include <string>
+
+#include "engine/output.hpp"
+#include "engine/simulation.hpp"
+#include "scenario/problem.hpp"
+
+namespace pdq {
+
+std::string restartPath(const std::string& dir, long step);
+std::string bondRestartPath(const std::string& dir, long step);
+
+class RestartOutput final : public Output {
+ public:
+  RestartOutput(long every, bool atEnd) : Output(every), atEnd_(atEnd) {}
+  bool atEnd() const override { return atEnd_; }
+  bool capturesState() const override { return true; }
+  void write(OutputContext& out) override;
+
+ private:
+  bool atEnd_;
+  long lastWritten_ = -1;
+};
+
+// Replaces the problem's alterable attributes by those of the restart file `path` (every
+// particle must be there, and nothing else), sets the first step, and returns the bond
+// state from the companion Bonds.<step>.rst (empty if the model has no bonds).
+BondState readRestart(const std::string& path, Problem& problem);
+
+}  // namespace pdq

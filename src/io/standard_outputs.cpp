@@ -1,0 +1,21 @@
+#include "io/standard_outputs.hpp"
+
+#include "io/history_output.hpp"
+#include "io/restart.hpp"
+#include "io/vtu_output.hpp"
+#include "post/picture_output.hpp"
+
+namespace pdq {
+
+void addStandardOutputs(Simulation& sim, const OutputSettings& o) {
+  if (o.restartEvery > 0 || o.finalRestart)
+    sim.addOutput(std::make_unique<RestartOutput>(o.restartEvery, o.finalRestart));
+  if (o.historyEvery > 0 && !o.historyIds.empty())
+    sim.addOutput(std::make_unique<TimeHistoryOutput>(o.historyEvery, o.historyIds));
+  if (o.globalsEvery > 0 && !sim.model().globals().empty())
+    sim.addOutput(std::make_unique<GlobalsOutput>(o.globalsEvery));
+  if (o.paraview) sim.addOutput(std::make_unique<VtuOutput>(vtuOptions(*o.paraview)));
+  if (o.picture) sim.addOutput(std::make_unique<post::PictureOutput>(post::pictureOptions(*o.picture)));
+}
+
+}  // namespace pdq
