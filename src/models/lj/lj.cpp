@@ -64,6 +64,7 @@ class LennardJones final : public Model {
 
   void force(Context& ctx) override {
     noteDisplacement(ctx);
+    if (ctx.step() == ctx.steps()) checkNoBreach(ctx);
     evaluate(ctx.particles, forces(ctx.particles), nullptr);
   }
 
@@ -92,6 +93,8 @@ class LennardJones final : public Model {
   }
   std::vector<double> globalValues(Context& ctx) override {
     Particles& P = ctx.particles;
+    noteDisplacement(ctx);
+    checkNoBreach(ctx);
     energy_.resize(P.owned());
     evaluate(P, forces(P), energy_.data());
     const double hm = ctx.dt() / mass_;
@@ -165,8 +168,9 @@ class LennardJones final : public Model {
   // The lists hold every pair within rc only while no particle moved further than
   // (radius - rc) / 2 since they were built; the engine shuffles before that happens when
   // the run's minimum cell size is cutoff + skin. Each step notes, without communicating,
-  // whether that held on this rank; the next shuffle (every run ends with one) turns a
-  // breach on any rank into an error, so a misconfigured run never ends quietly.
+  // whether that held on this rank; the next shuffle, the last step and every reading of
+  // the globals turn a breach on any rank into an error, so a misconfigured run never
+  // ends quietly.
   void noteDisplacement(const Context& ctx) {
     const Particles& P = ctx.particles;
     const double limit = sq((radius_ - pair_.rc) / 2);
