@@ -3,6 +3,8 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <numeric>
 
 namespace pdq::lj {
@@ -10,6 +12,8 @@ namespace pdq::lj {
 namespace {
 // Particles whose lists are sorted together (their entries fit in the second-level cache).
 constexpr std::size_t kBlock = 1024;
+constexpr int kDigitBits = 11;
+constexpr std::uint64_t kDigitMask = (1u << kDigitBits) - 1;
 }  // namespace
 
 void VerletList::build(const Context& ctx, double radius) {
@@ -28,6 +32,7 @@ void VerletList::build(const Context& ctx, double radius) {
     std::copy_n(P.alter(k), 3, &xyz_[3 * k]);
   }
 
+  const int rankBits = std::max(1, static_cast<int>(std::bit_width(nLocal - (nLocal > 0))));
   const double r2max = radius * radius;
   start_.assign(n + 1, 0);
   // Each thread lists a contiguous range of particles into its own buffer; the buffers
@@ -40,7 +45,6 @@ void VerletList::build(const Context& ctx, double radius) {
     Scratch& s = threads_[t];
     s.out.clear();
     s.near.resize(nLocal);
-    s.count.assign(nLocal + 1, 0);
     const double* xyz = xyz_.data();
     const std::uint32_t* rank = rank_.data();
     const std::size_t lo = n * t / nt, hi = n * (t + 1) / nt;
@@ -48,8 +52,7 @@ void VerletList::build(const Context& ctx, double radius) {
       const std::size_t b1 = std::min(hi, b0 + kBlock);
       // 1. The neighbours of each particle of the block, as (rank, particle) pairs in
       //    the engine's cell order.
-      s.key.clear();
-      s.who.clear();
+      s.pairs.clear();
       for (std::size_t i = b0; i < b1; ++i) {
         const double x = xyz[3 * i], y = xyz[3 * i + 1], z = xyz[3 * i + 2];
         std::uint32_t* c = s.near.data();
@@ -59,18 +62,20 @@ void VerletList::build(const Context& ctx, double radius) {
           c[m] = rank[j];
           m += dx * dx + dy * dy + dz * dz < r2max;
         });
-        s.key.insert(s.key.end(), c, c + m);
-        s.who.insert(s.who.end(), m, static_cast<std::uint32_t>(i - b0));
+        const std::uint64_t who = i - b0;
+        for (std::size_t k = 0; k < m; ++k) s.pairs.push_back(std::uint64_t(c[k]) << 32 | who);
         start_[i + 1] = m;
       }
-      // 2. Counting sort of the pairs by rank; dealing them out in that order leaves
-      //    every list sorted by global ID.
-      for (std::uint32_t r : s.key) s.count[r + 1]++;
-      for (std::size_t r = 0; r < nLocal; ++r) s.count[r + 1] += s.count[r];
-      s.sorted.resize(s.key.size());
-      for (std::size_t e = 0; e < s.key.size(); ++e)
-        s.sorted[s.count[s.key[e]]++] = {byRank_[s.key[e]], s.who[e]};
-      std::fill(s.count.begin(), s.count.end(), 0);
+      // 2. Stable radix sort of the pairs by rank, 11 bits a pass; dealing them out in
+      //    that order leaves every list sorted by global ID.
+      s.spare.resize(s.pairs.size());
+      for (int shift = 32; shift < 32 + rankBits; shift += kDigitBits) {
+        std::array<std::uint32_t, (1u << kDigitBits) + 1> count{};
+        for (std::uint64_t q : s.pairs) count[((q >> shift) & kDigitMask) + 1]++;
+        for (std::size_t d = 0; d < (1u << kDigitBits); ++d) count[d + 1] += count[d];
+        for (std::uint64_t q : s.pairs) s.spare[count[(q >> shift) & kDigitMask]++] = q;
+        s.pairs.swap(s.spare);
+      }
       const std::size_t base = s.out.size();
       s.cursor.resize(b1 - b0);
       std::size_t at = base;
@@ -79,7 +84,7 @@ void VerletList::build(const Context& ctx, double radius) {
         at += start_[i + 1];
       }
       s.out.resize(at);
-      for (const auto& [j, w] : s.sorted) s.out[s.cursor[w]++] = j;
+      for (std::uint64_t q : s.pairs) s.out[s.cursor[q & 0xffffffffu]++] = byRank_[q >> 32];
     }
   }
   longest_ = 0;

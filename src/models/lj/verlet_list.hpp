@@ -22,12 +22,10 @@ class VerletList {
   std::size_t longest() const { return longest_; }
 
  private:
-  struct Scratch {                        // one per thread
-    std::vector<std::uint32_t> out;       // the lists of the thread's particles
-    std::vector<std::uint32_t> near;      // kept candidates of one particle
-    std::vector<std::uint32_t> key, who;  // (rank, particle in block) pairs of a block
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> sorted;  // (local index, particle)
-    std::vector<std::uint32_t> count;                             // counting sort by rank
+  struct Scratch {                            // one per thread
+    std::vector<std::uint32_t> out;           // the lists of the thread's particles
+    std::vector<std::uint32_t> near;          // kept candidates of one particle
+    std::vector<std::uint64_t> pairs, spare;  // (rank << 32 | particle in block) of a block
     std::vector<std::size_t> cursor;
   };
   std::vector<std::size_t> start_;

@@ -1,0 +1,50 @@
+// Scenario generator for the fcc crystal of prep/fcc.hpp (a periodic box of it):
+//     [particles]
+//     generator = "fcc"
+//     cells = [10, 10, 10]      # unit cells along X, Y, Z (4 atoms each)
+//     density = 0.8442          # atoms per unit volume
+//     temperature = 1.44        # optional: random velocities (into vx, vy, vz)
+//     seed = 87287              # optional
+//     mass = 1.0                # optional, for the temperature
+#include "engine/error.hpp"
+#include "prep/fcc.hpp"
+#include "prep/generator.hpp"
+
+namespace pdq {
+namespace {
+
+Generated fcc(const Params& p, const Schema& schema) {
+  FccSpec s;
+  const auto cells = p.numbers("cells");
+  const auto where = p.raw("cells");
+  if (cells.size() != 3) throw InputError(where->file, where->line, "cells needs 3 whole numbers");
+  for (int a = 0; a < 3; ++a) {
+    if (cells[a] < 1 || cells[a] != static_cast<int>(cells[a]))
+      throw InputError(where->file, where->line, "cells must be whole numbers >= 1");
+    s.cells[a] = static_cast<int>(cells[a]);
+  }
+  s.density = p.number("density");
+  if (!(s.density > 0)) {
+    const auto v = p.raw("density");
+    throw InputError(v->file, v->line, "density must be positive");
+  }
+  s.temperature = p.number("temperature", 0.0, 0.0, 1e300);
+  s.mass = p.number("mass", 1.0, 1e-300, 1e300);
+  s.seed = static_cast<std::uint64_t>(p.integer("seed", 1));
+  s.firstId = p.integer("first_id", 1);
+  s.velocityColumn = schema.alterIndex("vx");
+  Generated g;
+  g.particles.nFixed = schema.nFixed();
+  g.particles.nAlter = schema.nAlter();
+  const FccBox box = makeFcc(s, g.particles);
+  g.boxLo = box.lo;
+  g.boxHi = box.hi;
+  return g;
+}
+
+}  // namespace
+
+PDQ_REGISTER_GENERATOR(fcc, "fcc",
+                       "fcc crystal filling a periodic box: cells, density, temperature, seed");
+
+}  // namespace pdq
