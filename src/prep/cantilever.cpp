@@ -4,6 +4,7 @@
 
 #include "engine/error.hpp"
 #include "engine/model.hpp"
+#include "io/thesis_input.hpp"
 #include "prep/lattice.hpp"
 
 namespace pdq::prep {
@@ -53,6 +54,19 @@ CantileverProblem thesisCantilever(const CantileverSpec& spec) {
   pb.run.steps = spec.steps;
   pb.run.finalRestart = false;
   return pb;
+}
+
+void writeThesisCantilever(const CantileverSpec& spec, const std::string& dir) {
+  CantileverProblem c = thesisCantilever(spec);
+  Problem pb;
+  pb.source = dir;
+  pb.modelName = c.model;
+  pb.model = ModelRegistry::create(c.model);
+  pb.model->configure(c.params);
+  pb.particles = std::move(c.particles);
+  pb.run = c.run;
+  pb.output.finalRestart = false;
+  writeThesisInput(dir, pb, c.params);
 }
 
 }  // namespace pdq::prep
