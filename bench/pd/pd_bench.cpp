@@ -27,6 +27,7 @@
 #include "engine/error.hpp"
 #include "engine/model.hpp"
 #include "engine/simulation.hpp"
+#include "io/thesis_input.hpp"
 #include "lammps_peer.hpp"
 #include "models/peri/peri_model.hpp"
 #include "prep/cantilever.hpp"
@@ -68,17 +69,22 @@ int cantilever(int argc, char** argv, Comm& comm) {
   spec.m = std::stoi(argv[2]);
   spec.n = std::stoi(argv[3]);
   spec.model = argv[4];
-  prep::CantileverProblem pb = prep::thesisCantilever(spec);
+  if (argc >= 8) spec.steps = std::stol(argv[7]);
+  // The preprocessor writes the thesis's input files; the run reads them back.
+  const std::string dir = "pd_cantilever_" + spec.model + "_" + argv[2] + "x" + argv[3] + "_np" +
+                          std::to_string(comm.size());
+  if (comm.root()) prep::writeThesisCantilever(spec, dir);
+  comm.barrier();
+  Problem pb = readThesisInput(dir);
   if (argc >= 7) pb.run.procs = {std::stoi(argv[5]), std::stoi(argv[6]), 1};
-  if (argc >= 8) pb.run.steps = std::stol(argv[7]);
-  pb.run.outDir = "pd_cantilever_out";
+  pb.run.outDir = dir + "/out";
+  pb.run.finalRestart = false;
   const std::size_t nParticles = pb.particles.size();
-  auto model = ModelRegistry::create(pb.model);
-  model->configure(pb.params);
-  pb.params.checkAllUsed();
-  Simulation sim(std::move(model), std::move(pb.particles), pb.run, comm);
+  Gid monitored = 0;
+  for (Gid g : pb.particles.gid) monitored = std::max(monitored, g);
+  Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
   const double t = timedRun(sim, comm);
-  const double y = attributeOf(sim, pb.monitored, 1);
+  const double y = attributeOf(sim, monitored, 1);
   const long bonds = comm.sum(static_cast<long>(sim.bonds().count()));
   double mem = peakMemoryMiB();
   ExactSum acc;

@@ -4,7 +4,8 @@
 #     particles, δ = 3 s, 200 steps, undamped and undamaged): displacement agreement and
 #     throughput (particle-steps/s, bond-steps/s) of each code at 1 and 2 ranks, and the
 #     ratio, for PMB (peri/pmb) and LPS (peri/lps);
-#  2. the thesis's Tables 3.2/3.3: the monitored particle's final Y of the 2D cantilever
+#  2. the thesis's Tables 3.2/3.3 (the preprocessor writes the thesis's input files, each
+#     run reads them): the monitored particle's final Y of the 2D cantilever
 #     (721 x 309, 223,820 particles, LPS at ν = 0.22 and PMB at its ν = 1/3) for 1-4 ranks,
 #     several grids and 1-2 threads, which must all be identical;
 #  3. peak memory of the 1,122,892-particle cantilever (1617 x 693) and bytes per bond.
@@ -57,7 +58,7 @@ for model in lps pmb; do
   ys=()
   for cfg in "1 1 1 1" "1 1 1 2" "2 2 1 1" "2 1 2 2" "3 3 1 1" "4 4 1 1" "4 2 2 1"; do
     read -r np px py th <<<"$cfg"
-    line=$(OMP_NUM_THREADS=$th "${MPIRUN[@]}" -np "$np" -x OMP_NUM_THREADS="$th" \
+    line=$(cd "$WORK" && OMP_NUM_THREADS=$th "${MPIRUN[@]}" -np "$np" -x OMP_NUM_THREADS="$th" \
              "$BENCH" cantilever "$M" "$D" "$model" "$px" "$py")
     echo "$line"
     ys+=("$(sed -n 's/.*Y=\([^ ]*\).*/\1/p' <<<"$line")")
@@ -72,7 +73,7 @@ done
 echo
 echo "== Memory: cantilever ${BIGM} x ${BIGN} ($(( (BIGM + 1) * (BIGN + 1) )) particles), 1 rank, 5 steps =="
 for model in pmb lps; do
-  line=$("$BENCH" cantilever "$BIGM" "$BIGN" "$model" 1 1 5)
+  line=$(cd "$WORK" && "$BENCH" cantilever "$BIGM" "$BIGN" "$model" 1 1 5)
   echo "$line"
   awk '{for (i = 1; i <= NF; ++i) { split($i, kv, "="); v[kv[1]] = kv[2] } }
        END { printf "%s: peak %.0f MiB = %.1f bytes per bond (all memory over %d bonds); %s\n",

@@ -4,6 +4,7 @@
 
 #include "engine/error.hpp"
 #include "engine/model.hpp"
+#include "io/thesis_input.hpp"
 #include "prep/lattice.hpp"
 
 namespace pdq::prep {
@@ -52,6 +53,19 @@ CantileverProblem thesisCantilever(const CantileverSpec& spec) {
   pb.run.minCellSize = spec.cellFactor * delta;
   pb.run.steps = spec.steps;
   return pb;
+}
+
+void writeThesisCantilever(const CantileverSpec& spec, const std::string& dir) {
+  CantileverProblem c = thesisCantilever(spec);
+  Problem pb;
+  pb.source = dir;
+  pb.modelName = c.model;
+  pb.model = ModelRegistry::create(c.model);
+  pb.model->configure(c.params);
+  pb.particles = std::move(c.particles);
+  pb.run = c.run;
+  pb.output.finalRestart = false;
+  writeThesisInput(dir, pb, c.params);
 }
 
 }  // namespace pdq::prep

@@ -41,4 +41,9 @@ struct CantileverProblem {
 // Builds the particles in the schema of spec.model (found in the model registry).
 CantileverProblem thesisCantilever(const CantileverSpec& spec);
 
+// Writes the cantilever as the thesis's four input files in `dir` (pdQInput.dat,
+// pdQUserInput.dat, ParticleFixedAttrs.dat, ParticleAlterAttrs.dat); io/thesis_input.hpp
+// reads them back into a Problem that runs.
+void writeThesisCantilever(const CantileverSpec& spec, const std::string& dir);
+
 }  // namespace pdq::prep

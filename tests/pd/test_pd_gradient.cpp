@@ -11,7 +11,8 @@
 namespace pdq::pdtest {
 namespace {
 
-void checkGradient(const std::string& model, bool threeD, bool correction = false) {
+void checkGradient(const std::string& model, bool threeD, bool correction = false,
+                   bool constantInfluence = false) {
   Comm comm(MPI_COMM_WORLD);
   const int n = threeD ? 6 : 9;
   std::vector<std::pair<std::string, double>> kv{
@@ -21,6 +22,7 @@ void checkGradient(const std::string& model, bool threeD, bool correction = fals
       model, kv, threeD ? prep::cubicLattice(n, n, n, 1.0) : prep::squareLattice(n, n, 1.0), 0.5);
   if (!threeD) pb.params.set("thickness", "0.5");
   if (correction) pb.params.set("surface_correction", "true");
+  if (constantInfluence) pb.params.set("influence", "constant");
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-0.05, 0.05);
   for (std::size_t k = 0; k < pb.ps.size(); ++k)
@@ -66,6 +68,7 @@ TEST(PdGradient, Pmb3D) { checkGradient("pmb", true); }
 TEST(PdGradient, PmbSurfaceCorrection3D) { checkGradient("pmb", true, true); }
 TEST(PdGradient, Lps2D) { checkGradient("lps", false); }
 TEST(PdGradient, Lps3D) { checkGradient("lps", true); }
+TEST(PdGradient, Lps3DConstantInfluence) { checkGradient("lps", true, false, true); }
 
 }  // namespace
 }  // namespace pdq::pdtest

@@ -3,6 +3,7 @@
 
 #include "engine/error.hpp"
 #include "engine/model.hpp"
+#include "io/thesis_input.hpp"
 #include "prep/cantilever.hpp"
 #include "prep/lattice.hpp"
 
@@ -54,6 +55,22 @@ TEST(PdPrep, ThesisCantilever) {
   EXPECT_FALSE(thesisCantilever(spec).params.has("nu"));
   spec.model = "mplm";
   EXPECT_THROW(thesisCantilever(spec), InputError);
+}
+
+// The preprocessor's thesis input files read back into the same problem.
+TEST(PdPrep, ThesisCantileverFilesRoundTrip) {
+  CantileverSpec spec;
+  spec.m = 12;
+  spec.n = 4;
+  const CantileverProblem direct = thesisCantilever(spec);
+  writeThesisCantilever(spec, "pd_prep_files");
+  const Problem read = readThesisInput("pd_prep_files");
+  EXPECT_EQ(read.modelName, "lps");
+  EXPECT_EQ(read.run.steps, 200);
+  EXPECT_EQ(read.run.minCellSize, direct.run.minCellSize);
+  EXPECT_EQ(read.particles.gid, direct.particles.gid);
+  EXPECT_EQ(read.particles.fixed, direct.particles.fixed);
+  EXPECT_EQ(read.particles.alter, direct.particles.alter);
 }
 
 }  // namespace
