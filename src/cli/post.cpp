@@ -55,12 +55,14 @@ void pictureCommand(const PictureCommandOptions& o) {
   post::PictureOptions opt = post::pictureOptions(table);
   table.checkAllUsed();
   const Schema schema = pb.model->schema();
-  post::checkRequest(opt.request, post::quantityNames(schema, *pb.model), schema.bond);
+  std::vector<std::string> bondNames{"broken"};  // the engine's flag, then the model's
+  bondNames.insert(bondNames.end(), schema.bond.begin(), schema.bond.end());
+  post::checkRequest(opt.request, post::quantityNames(schema, *pb.model), bondNames);
   // Set up (bonds, fields) at the restart's step without stepping, so the picture is
   // the one the run would have drawn at that step.
   RunConfig cfg = pb.run;
   cfg.steps = cfg.firstStep;
-  cfg.outDir = ".";
+  cfg.outDir.assign(1, '.');
   const std::string outDir = pb.run.outDir;
   Simulation sim(std::move(pb.model), std::move(pb.particles), cfg, comm);
   sim.restoreBonds(std::move(bonds));

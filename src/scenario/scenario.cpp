@@ -267,8 +267,6 @@ void readOutput(const toml::table& root, const std::string& file, Problem& pb) {
   if (out.historyEvery > 0 && out.historyIds.empty())
     throw InputError(file, p.raw("history_every")->line,
                      "history_every needs history_ids (the particles to follow)");
-  pb.run.restartEvery = out.restartEvery;
-  pb.run.finalRestart = out.finalRestart;
   if (t) {
     if (const toml::table* v = subTable(*t, "paraview", file)) {
       p.accept("paraview");
@@ -282,7 +280,9 @@ void readOutput(const toml::table& root, const std::string& file, Problem& pb) {
       const post::PictureOptions o = post::pictureOptions(*out.picture);
       out.picture->checkAllUsed();
       const Schema schema = pb.model->schema();
-      post::checkRequest(o.request, post::quantityNames(schema, *pb.model), schema.bond);
+      std::vector<std::string> bondNames{"broken"};  // the engine's flag, then the model's
+      bondNames.insert(bondNames.end(), schema.bond.begin(), schema.bond.end());
+      post::checkRequest(o.request, post::quantityNames(schema, *pb.model), bondNames);
     }
   }
   p.checkAllUsed();

@@ -168,7 +168,7 @@ TEST(Cli, PostDrawsPicturesAndPlots) {
           dir);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_EQ(readFile(dir + "/broken.png").substr(1, 3), "PNG");
-  r = runPdq({"post", "plot", "out/history.csv", "-y", "brokn"}, dir);
+  r = runPdq({"post", "plot", "out/history.csv", "-y", "broken_bond"}, dir);
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("did you mean 'broken_bonds'"));
   EXPECT_FALSE(fs::exists(dir + "/out/history.png"));
