@@ -24,6 +24,11 @@ std::string Progress::line(long step, long firstStep, long lastStep, double dt, 
   const double rate = seconds > 0 ? particles * done / seconds : 0;
   const double toGo = done > 0 ? seconds / done * (lastStep - step) : NAN;
   char buf[200];
+  if (done <= 0 && step < lastStep) {
+    std::snprintf(buf, sizeof buf, "step %ld/%ld (0%%)  t = %.6g  %.0f particles", step, lastStep,
+                  step * dt, particles);
+    return buf;
+  }
   std::snprintf(buf, sizeof buf, "step %ld/%ld (%.0f%%)  t = %.6g  %.3g particle-steps/s  %s",
                 step, lastStep, total > 0 ? 100.0 * done / total : 100.0, step * dt, rate,
                 step >= lastStep ? ("took " + duration(seconds)).c_str()

@@ -4,8 +4,11 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 
 #include "pdq_process.hpp"
 
@@ -47,7 +50,23 @@ TEST(CliPlugin, OutOfTreeModelBuiltAgainstTheInstalledHeaders) {
   ASSERT_EQ(r.code, 0) << r.all();
   // The compressed cube springs back: kinetic energy appears, and the total stays put.
   const std::string hist = readFile(dir + "/cluster_out/history.csv");
-  ASSERT_THAT(hist, HasSubstr("kinetic"));
+  ASSERT_THAT(hist, HasSubstr("step,time,kinetic,potential\n"));
+  std::istringstream rows(hist.substr(hist.find('\n') + 1));
+  std::string row;
+  double first = 0, maxKinetic = 0, maxDrift = 0;
+  int n = 0;
+  while (std::getline(rows, row)) {
+    long step = 0;
+    double time = 0, kinetic = 0, potential = 0;
+    ASSERT_EQ(std::sscanf(row.c_str(), "%ld,%lf,%lf,%lf", &step, &time, &kinetic, &potential), 4);
+    if (step == 0) continue;  // no force evaluated yet: no potential energy
+    if (n++ == 0) first = kinetic + potential;
+    maxKinetic = std::max(maxKinetic, kinetic);
+    maxDrift = std::max(maxDrift, std::abs(kinetic + potential - first) / std::abs(first));
+  }
+  EXPECT_EQ(n, 10);
+  EXPECT_GT(maxKinetic, 5.0);    // the compressed cube springs back
+  EXPECT_LT(maxDrift, 1e-3);     // and keeps its energy (leapfrog, half-step kinetic energy)
   // Under mpirun too, with the same bits.
   r = runPdq({"run", "cluster.toml", "--steps", "200", "--plugin", lib, "-q", "--out", "np2"}, dir,
           2);
