@@ -1,4 +1,6 @@
 // pdq post: pictures of the lattice from a restart file, and plots of time histories.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -74,7 +76,10 @@ void pictureCommand(const PictureCommandOptions& o) {
       fs::create_directories(outDir);
       path = outDir + "/" + post::PictureOutput::fileName(opt, sim.step());
     }
-    post::renderSnapshot(snap, opt.request, path);
+    post::PictureRequest request = opt.request;
+    if (request.style.title.empty())  // as the run titles its pictures
+      request.style.title = fmt::format("step {}, t = {:.4g}", snap.step, snap.time);
+    post::renderSnapshot(snap, request, path);
     std::printf("wrote %s (step %ld, %zu particles)\n", path.c_str(), sim.step(),
                 snap.particles());
   }

@@ -145,15 +145,23 @@ TEST(Cli, PrepWritesTheThesisFiles) {
 
 TEST(Cli, PostDrawsPicturesAndPlots) {
   const std::string dir = freshDir("post");
-  const std::string sc = springCase(dir, 20);
+  const std::string sc =
+      springCase(dir, 20, "\n[output.picture]\ncolour_by = \"damage\"\nwidth = 800\n");
   ASSERT_EQ(runPdq({"run", sc, "-q"}, dir).code, 0);
-  auto r = runPdq({"post", "picture", sc, "--set", "colour_by=damage", "--set", "magnification=5"},
-               dir);
-  ASSERT_EQ(r.code, 0) << r.all();
-  EXPECT_THAT(r.out, HasSubstr("step 20"));
   const std::string png = readFile(dir + "/out/damage_000020.png");
   ASSERT_GT(png.size(), 1000u);
   EXPECT_EQ(png.substr(1, 3), "PNG");
+  // From the last restart file, the picture the run drew, to the byte.
+  auto r = runPdq({"post", "picture", sc, "-o", "again.png"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.out, HasSubstr("step 20"));
+  EXPECT_TRUE(readFile(dir + "/again.png") == png);
+  // Other options on the command line: a different picture, in the output folder.
+  r = runPdq({"post", "picture", sc, "--set", "magnification=5", "--set", "name=big"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  const std::string big = readFile(dir + "/out/big_000020.png");
+  EXPECT_EQ(big.substr(1, 3), "PNG");
+  EXPECT_FALSE(big == png);
   r = runPdq({"post", "picture", sc, "--restart", "out/ParticleAlterAttrs.10.rst", "-o",
            "early.svg"},
           dir);
