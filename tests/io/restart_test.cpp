@@ -50,7 +50,10 @@ test::State runProblem(Problem pb, BondState* bonds = nullptr) {
 
 void checkRestart(bool shuffle) {
   const std::string dir = shuffle ? "out_restart_shuffle" : "out_restart_fixed";
-  std::filesystem::remove_all(dir);
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) std::filesystem::remove_all(dir);
+  MPI_Barrier(MPI_COMM_WORLD);
   const test::State full = runProblem(springProblem(shuffle, dir));
   Problem again = springProblem(shuffle, dir + "_again");
   BondState bonds = readRestart(restartPath(dir, 240), again);
@@ -60,8 +63,6 @@ void checkRestart(bool shuffle) {
   for (auto d : bonds.dead) dead += d;
   EXPECT_GT(dead, 0) << "no spring broke before the restart; the test would prove little";
   const test::State resumed = runProblem(std::move(again), &bonds);
-  int rank = 0;
-  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) {
     EXPECT_FALSE(full.particles.empty());
     EXPECT_TRUE(full == resumed) << "the restarted run differs from the uninterrupted one";
@@ -73,11 +74,14 @@ TEST(Restart, ShufflingPeriodicLatticeContinuesBitwise) { checkRestart(true); }
 
 TEST(Restart, RejectsAFileThatIsNotARestart) {
   Problem pb = springProblem(false, "out_restart_bad");
-  std::filesystem::create_directories("out_restart_bad");
-  {
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  if (rank == 0) {
+    std::filesystem::create_directories("out_restart_bad");
     std::ofstream f("out_restart_bad/ParticleAlterAttrs.5.rst");
     f << "1 0 0 0 0 0 0\n";
   }
+  MPI_Barrier(MPI_COMM_WORLD);
   EXPECT_THROW(readRestart("out_restart_bad/ParticleAlterAttrs.5.rst", pb), InputError);
 }
 
