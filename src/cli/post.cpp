@@ -80,8 +80,7 @@ void pictureCommand(const PictureCommandOptions& o) {
     if (request.style.title.empty())  // as the run titles its pictures
       request.style.title = fmt::format("step {}, t = {:.4g}", snap.step, snap.time);
     post::renderSnapshot(snap, request, path);
-    std::printf("wrote %s (step %ld, %zu particles)\n", path.c_str(), sim.step(),
-                snap.particles());
+    std::printf("wrote %s (step %ld, %zu particles)\n", path.c_str(), sim.step(), snap.particles());
   }
   comm.barrier();
 }
@@ -101,7 +100,8 @@ void plotCommand(const PlotCommandOptions& o) {
       for (const auto& n : t.names)
         if (n != x) ys.push_back(n);
     for (const auto& y : ys) {
-      const std::string label = tables.size() > 1 ? fs::path(t.source).filename().string() + ": " + y : y;
+      const std::string label =
+          tables.size() > 1 ? fs::path(t.source).filename().string() + ": " + y : y;
       series.push_back({label, xs, t.column(y)});
     }
   }

@@ -19,8 +19,8 @@ using testing::HasSubstr;
 TEST(CliPlugin, OutOfTreeModelBuiltAgainstTheInstalledHeaders) {
   const std::string dir = freshDir("plugin");
   const std::string prefix = dir + "/prefix", build = dir + "/build";
-  ASSERT_EQ(std::system(("cmake --install '" PDQ_BINARY_DIR "' --prefix '" + prefix +
-                         "' > '" + dir + "/install.log' 2>&1")
+  ASSERT_EQ(std::system(("cmake --install '" PDQ_BINARY_DIR "' --prefix '" + prefix + "' > '" +
+                         dir + "/install.log' 2>&1")
                             .c_str()),
             0)
       << readFile(dir + "/install.log");
@@ -30,8 +30,8 @@ TEST(CliPlugin, OutOfTreeModelBuiltAgainstTheInstalledHeaders) {
                             .c_str()),
             0)
       << readFile(dir + "/configure.log");
-  ASSERT_EQ(std::system(("cmake --build '" + build + "' -j2 > '" + dir + "/build.log' 2>&1").c_str()),
-            0)
+  ASSERT_EQ(
+      std::system(("cmake --build '" + build + "' -j2 > '" + dir + "/build.log' 2>&1").c_str()), 0)
       << readFile(dir + "/build.log");
   const std::string lib = build + "/libmorse.so";
   ASSERT_TRUE(fs::exists(lib));
@@ -65,11 +65,11 @@ TEST(CliPlugin, OutOfTreeModelBuiltAgainstTheInstalledHeaders) {
     maxDrift = std::max(maxDrift, std::abs(kinetic + potential - first) / std::abs(first));
   }
   EXPECT_EQ(n, 10);
-  EXPECT_GT(maxKinetic, 5.0);    // the compressed cube springs back
-  EXPECT_LT(maxDrift, 1e-3);     // and keeps its energy (leapfrog, half-step kinetic energy)
+  EXPECT_GT(maxKinetic, 5.0);  // the compressed cube springs back
+  EXPECT_LT(maxDrift, 1e-3);   // and keeps its energy (leapfrog, half-step kinetic energy)
   // Under mpirun too, with the same bits.
   r = runPdq({"run", "cluster.toml", "--steps", "200", "--plugin", lib, "-q", "--out", "np2"}, dir,
-          2);
+             2);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_EQ(readFile(dir + "/np2/history.csv"), hist);
   EXPECT_EQ(readFile(dir + "/np2/ParticleAlterAttrs.200.rst"),
