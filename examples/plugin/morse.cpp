@@ -17,10 +17,10 @@ class Morse final : public pdq::Model {
 
  public:
   void configure(const pdq::Params& p) override {
-    depth_ = p.number("depth", 1.0, 1e-300, 1e300);        // D
-    width_ = p.number("stiffness", 6.0, 1e-300, 1e300);    // a, per unit length
-    r0_ = p.number("equilibrium", 1.0, 1e-300, 1e300);     // r0
-    cutoff_ = p.number("cutoff", 2.0 * r0_, r0_, 1e300);   // r_cut
+    depth_ = p.number("depth", 1.0, 1e-300, 1e300);       // D
+    width_ = p.number("stiffness", 6.0, 1e-300, 1e300);   // a, per unit length
+    r0_ = p.number("equilibrium", 1.0, 1e-300, 1e300);    // r0
+    cutoff_ = p.number("cutoff", 2.0 * r0_, r0_, 1e300);  // r_cut
     mass_ = p.number("mass", 1.0, 1e-300, 1e300);
     dt_ = p.number("dt", 0.002, 1e-300, 1e300);
   }
@@ -47,7 +47,7 @@ class Morse final : public pdq::Model {
         const double r = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         if (r >= cutoff_) return;
         const double e = std::exp(-width_ * (r - r0_));
-        u += 0.5 * depth_ * ((1 - e) * (1 - e) - 1);        // half: the pair is seen twice
+        u += 0.5 * depth_ * ((1 - e) * (1 - e) - 1);  // half: the pair is seen twice
         const double dUdr = 2 * depth_ * width_ * e * (1 - e);
         for (int a = 0; a < 3; ++a) f[a] -= dUdr * d[a] / r;  // -dU/dr along i - j
       });

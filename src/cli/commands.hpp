@@ -30,9 +30,9 @@ struct PrepOptions {
 void prepCommand(const PrepOptions& o);
 
 struct PictureCommandOptions {
-  std::string input;    // the scenario (or .dat folder) the run came from
-  std::string restart;  // ParticleAlterAttrs.<step>.rst; empty: the latest in the output
-  std::string out;      // picture file; empty: <output>/<name>_<step>.<format>
+  std::string input;             // the scenario (or .dat folder) the run came from
+  std::string restart;           // ParticleAlterAttrs.<step>.rst; empty: the latest in the output
+  std::string out;               // picture file; empty: <output>/<name>_<step>.<format>
   std::vector<std::string> set;  // key=value picture options ([output.picture] keys)
 };
 void pictureCommand(const PictureCommandOptions& o);

@@ -13,7 +13,7 @@ void infoCommand(const InfoOptions& o) {
   Problem& pb = sc.problem;
   const std::string modelName = pb.modelName;
   RunConfig cfg = pb.run;
-  cfg.outDir = ".";  // setup creates the output folder; info writes nothing
+  cfg.outDir.assign(1, '.');  // setup creates the output folder; info writes nothing
   Simulation sim(std::move(pb.model), std::move(pb.particles), cfg, comm);
   sim.setup();
   const std::string text = summary(sim, modelName, o.input, o.ranks);

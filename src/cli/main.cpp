@@ -1,7 +1,6 @@
 // The pdq command: `pdq run|prep|post|strength|info|list ...`; `pdq --help` for more.
 // Runs alone (one rank) or under mpirun; every rank parses the same command line.
 #include <CLI/CLI.hpp>
-
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -46,9 +45,8 @@ std::string extrasMessage(CLI::App& app) {
     for (const CLI::App* c : at->get_subcommands({})) commands.push_back(c->get_name());
     msg += (msg.empty() ? "" : "; ") +
            (option ? "unknown option '" + name + "'" + pdq::suggestion(name, optionNames(*at))
-            : commands.empty()
-                ? "unexpected argument '" + arg + "'"
-                : "unknown command '" + arg + "'" + pdq::suggestion(arg, commands));
+            : commands.empty() ? "unexpected argument '" + arg + "'"
+                               : "unknown command '" + arg + "'" + pdq::suggestion(arg, commands));
   }
   return (msg.empty() ? std::string("unexpected arguments") : msg) + " for 'pdq" +
          (at == &app ? "" : " " + at->get_name()) + "'";
@@ -82,19 +80,20 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "pdq 0.1.0");
   std::vector<std::string> plugins;
   auto addPlugin = [&](CLI::App* c) {
-    c->add_option("--plugin", plugins,
-                  "shared library with more models or generators (repeatable)")
+    c->add_option("--plugin", plugins, "shared library with more models or generators (repeatable)")
         ->check(CLI::ExistingFile)
         ->take_all();
   };
 
   RunOptions run;
   bool quiet = false, verbose = false;
-  CLI::App* runCmd = app.add_subcommand("run", "run a scenario (.toml) or a folder of the "
-                                               "thesis's .dat files");
+  CLI::App* runCmd = app.add_subcommand("run",
+                                        "run a scenario (.toml) or a folder of the "
+                                        "thesis's .dat files");
   runCmd->add_option("input", run.input, "scenario file or .dat folder")->required();
-  runCmd->add_option("--restart", run.restart,
-                     "continue from this ParticleAlterAttrs.<step>.rst (with its Bonds.<step>.rst)");
+  runCmd->add_option(
+      "--restart", run.restart,
+      "continue from this ParticleAlterAttrs.<step>.rst (with its Bonds.<step>.rst)");
   runCmd->add_option("--steps", run.steps, "run to this step instead of the scenario's")
       ->check(CLI::Range(0L, 1000000000000L));
   runCmd->add_option("-o,--out", run.out, "output folder instead of the scenario's");
@@ -107,15 +106,16 @@ int main(int argc, char** argv) {
   CLI::App* prepCmd = app.add_subcommand(
       "prep", "write the particle and input files a scenario generates, in the thesis's format");
   prepCmd->add_option("scenario", prep.input, "scenario file (.toml)")->required();
-  prepCmd->add_option("-o,--out", prep.out, "folder for the .dat files (default: <scenario>_input)");
+  prepCmd->add_option("-o,--out", prep.out,
+                      "folder for the .dat files (default: <scenario>_input)");
   addPlugin(prepCmd);
 
-  CLI::App* postCmd =
-      app.add_subcommand("post", "pictures of the lattice and plots of histories from saved output");
+  CLI::App* postCmd = app.add_subcommand(
+      "post", "pictures of the lattice and plots of histories from saved output");
   postCmd->require_subcommand(1);
   PictureCommandOptions picture;
-  CLI::App* pictureCmd =
-      postCmd->add_subcommand("picture", "draw the lattice (damage, any attribute) from a restart file");
+  CLI::App* pictureCmd = postCmd->add_subcommand(
+      "picture", "draw the lattice (damage, any attribute) from a restart file");
   pictureCmd->add_option("input", picture.input, "the scenario (or .dat folder) of the run")
       ->required();
   pictureCmd->add_option("--restart", picture.restart,
@@ -151,7 +151,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10000000));
   addPlugin(infoCmd);
 
-  CLI::App* listCmd = app.add_subcommand("list", "list the models, generators and strength searches");
+  CLI::App* listCmd =
+      app.add_subcommand("list", "list the models, generators and strength searches");
   addPlugin(listCmd);
 
   // An unknown command: say so with the nearest one, rather than CLI11's generic message.

@@ -1,4 +1,6 @@
 // pdq post: pictures of the lattice from a restart file, and plots of time histories.
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -55,12 +57,14 @@ void pictureCommand(const PictureCommandOptions& o) {
   post::PictureOptions opt = post::pictureOptions(table);
   table.checkAllUsed();
   const Schema schema = pb.model->schema();
-  post::checkRequest(opt.request, post::quantityNames(schema, *pb.model), schema.bond);
+  std::vector<std::string> bondNames{"broken"};  // the engine's flag, then the model's
+  bondNames.insert(bondNames.end(), schema.bond.begin(), schema.bond.end());
+  post::checkRequest(opt.request, post::quantityNames(schema, *pb.model), bondNames);
   // Set up (bonds, fields) at the restart's step without stepping, so the picture is
   // the one the run would have drawn at that step.
   RunConfig cfg = pb.run;
   cfg.steps = cfg.firstStep;
-  cfg.outDir = ".";
+  cfg.outDir.assign(1, '.');
   const std::string outDir = pb.run.outDir;
   Simulation sim(std::move(pb.model), std::move(pb.particles), cfg, comm);
   sim.restoreBonds(std::move(bonds));
@@ -72,9 +76,11 @@ void pictureCommand(const PictureCommandOptions& o) {
       fs::create_directories(outDir);
       path = outDir + "/" + post::PictureOutput::fileName(opt, sim.step());
     }
-    post::renderSnapshot(snap, opt.request, path);
-    std::printf("wrote %s (step %ld, %zu particles)\n", path.c_str(), sim.step(),
-                snap.particles());
+    post::PictureRequest request = opt.request;
+    if (request.style.title.empty())  // as the run titles its pictures
+      request.style.title = fmt::format("step {}, t = {:.4g}", snap.step, snap.time);
+    post::renderSnapshot(snap, request, path);
+    std::printf("wrote %s (step %ld, %zu particles)\n", path.c_str(), sim.step(), snap.particles());
   }
   comm.barrier();
 }
@@ -94,7 +100,8 @@ void plotCommand(const PlotCommandOptions& o) {
       for (const auto& n : t.names)
         if (n != x) ys.push_back(n);
     for (const auto& y : ys) {
-      const std::string label = tables.size() > 1 ? fs::path(t.source).filename().string() + ": " + y : y;
+      const std::string label =
+          tables.size() > 1 ? fs::path(t.source).filename().string() + ": " + y : y;
       series.push_back({label, xs, t.column(y)});
     }
   }

@@ -16,9 +16,10 @@ void prepCommand(const PrepOptions& o) {
   if (sc.problem.run.minCellSize <= 0) sc.problem.run.minCellSize = sc.problem.model->horizon();
   if (comm.root()) {
     writeThesisInput(o.out, sc.problem, sc.modelParams);
-    std::printf("wrote %s/{pdQInput.dat, pdQUserInput.dat, ParticleFixedAttrs.dat, "
-                "ParticleAlterAttrs.dat}: %zu particles of model %s\n",
-                o.out.c_str(), sc.problem.particles.size(), sc.problem.modelName.c_str());
+    std::printf(
+        "wrote %s/{pdQInput.dat, pdQUserInput.dat, ParticleFixedAttrs.dat, "
+        "ParticleAlterAttrs.dat}: %zu particles of model %s\n",
+        o.out.c_str(), sc.problem.particles.size(), sc.problem.modelName.c_str());
   }
   comm.barrier();
 }

@@ -24,8 +24,13 @@ std::string Progress::line(long step, long firstStep, long lastStep, double dt, 
   const double rate = seconds > 0 ? particles * done / seconds : 0;
   const double toGo = done > 0 ? seconds / done * (lastStep - step) : NAN;
   char buf[200];
-  std::snprintf(buf, sizeof buf, "step %ld/%ld (%.0f%%)  t = %.6g  %.3g particle-steps/s  %s",
-                step, lastStep, total > 0 ? 100.0 * done / total : 100.0, step * dt, rate,
+  if (done <= 0 && step < lastStep) {
+    std::snprintf(buf, sizeof buf, "step %ld/%ld (0%%)  t = %.6g  %.0f particles", step, lastStep,
+                  step * dt, particles);
+    return buf;
+  }
+  std::snprintf(buf, sizeof buf, "step %ld/%ld (%.0f%%)  t = %.6g  %.3g particle-steps/s  %s", step,
+                lastStep, total > 0 ? 100.0 * done / total : 100.0, step * dt, rate,
                 step >= lastStep ? ("took " + duration(seconds)).c_str()
                                  : (duration(toGo) + " to go").c_str());
   return buf;
@@ -59,13 +64,12 @@ void Progress::finish(long step) {
 
 void Progress::print(long step, bool final) {
   lastPrint_ = Clock::now();
-  const std::string text =
-      line(step, first_, last_, dt_, particles_,
-           std::chrono::duration<double>(lastPrint_ - start_).count());
+  const std::string text = line(step, first_, last_, dt_, particles_,
+                                std::chrono::duration<double>(lastPrint_ - start_).count());
   if (terminal_) {
     // Rewrite the line in place, padding over a longer previous one.
-    std::printf("\r%s%*s", text.c_str(), static_cast<int>(width_ > text.size() ? width_ - text.size() : 0),
-                "");
+    std::printf("\r%s%*s", text.c_str(),
+                static_cast<int>(width_ > text.size() ? width_ - text.size() : 0), "");
     width_ = text.size();
     if (final) std::printf("\n");
   } else {

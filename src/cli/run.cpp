@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "cli/commands.hpp"
 #include "cli/summary.hpp"
@@ -29,8 +30,12 @@ void runCommand(const RunOptions& o) {
   sim.setup();
   const std::string about = summary(sim, modelName, o.input);
   if (talk && o.verbosity == Verbosity::Verbose) std::printf("%s", about.c_str());
-  Progress progress(talk, isatty(STDOUT_FILENO) != 0, particles, sim.config().firstStep,
-                    sim.config().steps, sim.context().dt());
+  // Under mpirun the ranks' output may be a pseudo-terminal whatever mpirun's own output
+  // is (OpenMPI does this), so a launched run always writes plain lines.
+  const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE");
+  const bool terminal = isatty(STDOUT_FILENO) != 0 && !launched;
+  Progress progress(talk, terminal, particles, sim.config().firstStep, sim.config().steps,
+                    sim.context().dt());
   while (sim.advance()) progress.update(sim.step());
   sim.finish();
   progress.finish(sim.step());

@@ -1,7 +1,8 @@
 // pdq strength: the failure-load search of the scenario's model (scenario/strength.hpp).
+#include "scenario/strength.hpp"
+
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
-#include "scenario/strength.hpp"
 
 namespace pdq::cli {
 

@@ -81,15 +81,17 @@ std::string summary(Simulation& sim, const std::string& modelName, const std::st
   std::string size;
   for (int a = 0; a < dim; ++a) size += fmt::format("{}{:.6g}", a ? " x " : "", dec.cellSize(a));
   o += fmt::format("cells         {} (cell size {})\n", axes(cells, dim), size);
-  o += fmt::format("processors    {} = {} rank(s); up to {} cells, {:.0f} particles and {:.0f} "
-                   "ghosts per rank\n",
-                   axes(procs, dim), comm.size(), axes(core, dim), maxOwned, maxGhosts);
-  o += fmt::format("memory        particle and bond tables {} in all, {} on the largest rank; "
-                   "peak {} per rank during setup\n",
-                   megabytes(tablesTotal), megabytes(tablesMax), megabytes(peak));
+  o += fmt::format(
+      "processors    {} = {} rank(s); up to {} cells, {:.0f} particles and {:.0f} "
+      "ghosts per rank\n",
+      axes(procs, dim), comm.size(), axes(core, dim), maxOwned, maxGhosts);
+  o += fmt::format(
+      "memory        particle and bond tables {} in all, {} on the largest rank; "
+      "peak {} per rank during setup\n",
+      megabytes(tablesTotal), megabytes(tablesMax), megabytes(peak));
   if (ranks > 0) {
-    const double minCell = sim.config().minCellSize > 0 ? sim.config().minCellSize
-                                                          : sim.model().horizon();
+    const double minCell =
+        sim.config().minCellSize > 0 ? sim.config().minCellSize : sim.model().horizon();
     const std::array<int, 3> asked = sim.config().procs;
     Decomposition d(dom, minCell, asked, ranks, 0, source);
     std::array<int, 3> p{}, c{};
@@ -97,9 +99,10 @@ std::string summary(Simulation& sim, const std::string& modelName, const std::st
       p[a] = d.procs(a);
       c[a] = (d.globalCells(a) + p[a] - 1) / p[a];
     }
-    o += fmt::format("on {} ranks    processors {}, up to {} cells per rank, about {:.0f} "
-                     "particles per rank\n",
-                     ranks, axes(p, dim), axes(c, dim), owned / ranks);
+    o += fmt::format(
+        "on {} ranks    processors {}, up to {} cells per rank, about {:.0f} "
+        "particles per rank\n",
+        ranks, axes(p, dim), axes(c, dim), owned / ranks);
   }
   return o;
 }

@@ -17,8 +17,7 @@ std::map<std::string, Entry>& registry() {
 }
 }  // namespace
 
-bool GeneratorRegistry::add(const std::string& name, const std::string& description,
-                            Generator g) {
+bool GeneratorRegistry::add(const std::string& name, const std::string& description, Generator g) {
   registry()[name] = Entry{description, std::move(g)};
   return true;
 }

@@ -41,8 +41,7 @@ class GeneratorRegistry {
 
 }  // namespace pdq
 
-#define PDQ_REGISTER_GENERATOR(function, name, description)                                \
+#define PDQ_REGISTER_GENERATOR(function, name, description)                                    \
   static const bool pdq_generator_##function [[maybe_unused]] = ::pdq::GeneratorRegistry::add( \
-      name, description, [](const ::pdq::Params& p, const ::pdq::Schema& s) {                 \
-        return function(p, s);                                                                \
-      })
+      name, description,                                                                       \
+      [](const ::pdq::Params& p, const ::pdq::Schema& s) { return function(p, s); })

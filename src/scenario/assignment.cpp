@@ -17,7 +17,8 @@ Assignment readAssignment(const Params& p, const std::string& file, int line) {
   if (p.has("gradient")) {
     const auto g = p.numbers("gradient");
     if (g.size() != 3)
-      throw InputError(file, p.raw("gradient")->line, "gradient needs 3 numbers (per unit X, Y, Z)");
+      throw InputError(file, p.raw("gradient")->line,
+                       "gradient needs 3 numbers (per unit X, Y, Z)");
     std::copy(g.begin(), g.end(), a.gradient.begin());
   }
   const char* axes[3] = {"x", "y", "z"};

@@ -1,11 +1,12 @@
 #include "scenario/scenario.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <set>
-#include <toml++/toml.h>
 
 #include "engine/error.hpp"
 #include "io/thesis_input.hpp"
@@ -72,7 +73,8 @@ Params tableParams(const toml::table& t, const std::string& file, const std::str
 const toml::table* subTable(const toml::table& t, const char* key, const std::string& file) {
   const toml::node* n = t.get(key);
   if (!n) return nullptr;
-  if (!n->is_table()) throw InputError(file, lineOf(*n), std::string("'") + key + "' must be a table");
+  if (!n->is_table())
+    throw InputError(file, lineOf(*n), std::string("'") + key + "' must be a table");
   return n->as_table();
 }
 
@@ -157,8 +159,9 @@ Generated readParticles(const toml::table& root, const std::string& file, Proble
     const fs::path base = fs::path(file).parent_path();
     auto path = [&](const char* key) {
       if (!p.has(key))
-        throw InputError(file, lineOf(*t), std::string("[particles] needs both fixed and alter ") +
-                                               "files (" + key + " is missing)");
+        throw InputError(file, lineOf(*t),
+                         std::string("[particles] needs both fixed and alter ") + "files (" + key +
+                             " is missing)");
       const auto v = p.raw(key);
       const fs::path f = fs::path(v->text).is_absolute() ? fs::path(v->text) : base / v->text;
       if (!fs::is_regular_file(f))
@@ -185,8 +188,8 @@ Generated readParticles(const toml::table& root, const std::string& file, Proble
       throw InputError(file, lineOf(*s), "'set' must be a list of tables: [[particles.set]]");
     std::vector<Assignment> entries;
     for (auto&& e : *arr)
-      entries.push_back(readAssignment(tableParams(*e.as_table(), file, "[[particles.set]]"), file,
-                                       lineOf(e)));
+      entries.push_back(
+          readAssignment(tableParams(*e.as_table(), file, "[[particles.set]]"), file, lineOf(e)));
     applyAssignments(g.particles, schema, entries);
   }
   return g;
@@ -212,8 +215,9 @@ void readDecomposition(const toml::table& root, const std::string& file, const G
   const double horizon = pb.model->horizon();
   if (run.minCellSize > 0 && run.minCellSize < horizon) {
     throw InputError(file, p.raw("min_cell_size")->line,
-                     "min_cell_size " + numberText(run.minCellSize) + " is below the model's horizon " +
-                         numberText(horizon) + "; neighbours would be missed");
+                     "min_cell_size " + numberText(run.minCellSize) +
+                         " is below the model's horizon " + numberText(horizon) +
+                         "; neighbours would be missed");
   }
   run.margin = p.number("margin", -1.0, 0.0, 1e300);
   run.dim = static_cast<int>(p.number("dimension", 0.0, 0.0, 3.0));
@@ -280,7 +284,9 @@ void readOutput(const toml::table& root, const std::string& file, Problem& pb) {
       const post::PictureOptions o = post::pictureOptions(*out.picture);
       out.picture->checkAllUsed();
       const Schema schema = pb.model->schema();
-      post::checkRequest(o.request, post::quantityNames(schema, *pb.model), schema.bond);
+      std::vector<std::string> bondNames{"broken"};  // the engine's flag, then the model's
+      bondNames.insert(bondNames.end(), schema.bond.begin(), schema.bond.end());
+      post::checkRequest(o.request, post::quantityNames(schema, *pb.model), bondNames);
     }
   }
   p.checkAllUsed();
@@ -289,7 +295,8 @@ void readOutput(const toml::table& root, const std::string& file, Problem& pb) {
 }  // namespace
 
 Scenario readScenario(const std::string& path) {
-  if (!fs::is_regular_file(path)) throw InputError(path, 0, "cannot read the scenario: no such file");
+  if (!fs::is_regular_file(path))
+    throw InputError(path, 0, "cannot read the scenario: no such file");
   toml::table root;
   try {
     root = toml::parse_file(path);

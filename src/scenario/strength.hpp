@@ -30,7 +30,7 @@ class StrengthRegistry {
 
 }  // namespace pdq
 
-#define PDQ_REGISTER_STRENGTH(function, model, description)                                 \
+#define PDQ_REGISTER_STRENGTH(function, model, description)                                  \
   static const bool pdq_strength_##function [[maybe_unused]] = ::pdq::StrengthRegistry::add( \
       model, description,                                                                    \
       [](::pdq::Scenario& s, const ::pdq::Params& p, ::pdq::Comm& c) { function(s, p, c); })

@@ -32,14 +32,15 @@ struct Case {
 
 // Line numbers below refer to the files springCase writes: the scenario's keys are at
 // steps 2, [model] 4, name 5, critical_stretch 6, dt 7, horizon 8, fixed 11, alter 12,
-// the first [[particles.set]] 14 (attribute 15), min_cell_size 33, [output] 35,
-// dir 36, restart_every 37, history_ids 40; particle i of the files is on line i + 2.
+// the first [[particles.set]] 14 (attribute 15), min_cell_size 32, [output] 34,
+// dir 35, restart_every 36, history_ids 39; particle i of the files is on line i + 2.
 const std::vector<Case> cases = {
     {"malformed number", [](auto d) { edit(d + "/fixed.dat", "\n5 5 0 0", "\n5 5 O 0"); },
      "fixed.dat:7: 'O' is not a number (column 3)"},
     {"missing number", [](auto d) { edit(d + "/fixed.dat", "\n5 5 0 0", "\n5 5 0"); },
      "fixed.dat:7: expected 4 numbers (id X Y Z), found 3"},
-    {"wrong attribute count", [](auto d) { edit(d + "/alter.dat", "\n9 9 0 0 0 0 0", "\n9 9 0 0 0 0"); },
+    {"wrong attribute count",
+     [](auto d) { edit(d + "/alter.dat", "\n9 9 0 0 0 0 0", "\n9 9 0 0 0 0"); },
      "alter.dat:11: expected 7 numbers (id x y z vx vy vz), found 6"},
     {"duplicate id", [](auto d) { edit(d + "/fixed.dat", "\n6 6 0 0", "\n5 6 0 0"); },
      "fixed.dat:8: duplicate global ID 5"},
@@ -55,23 +56,24 @@ const std::vector<Case> cases = {
      "lattice.toml:7: unknown parameter 'dT' for model 'spring' ([model]) (did you mean 'dt'?)"},
     {"parameter out of range", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = -0.05"); },
      "lattice.toml:7: parameter 'dt'"},
-    {"parameter not a number", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = \"fast\""); },
+    {"parameter not a number",
+     [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = \"fast\""); },
      "lattice.toml:7: parameter 'dt' of model 'spring' ([model]): 'fast' is not a number"},
     {"cell size below horizon",
      [](auto d) { edit(d + "/lattice.toml", "min_cell_size = 1.5", "min_cell_size = 1.2"); },
-     "lattice.toml:33: min_cell_size 1.2 is below the model's horizon 1.5"},
+     "lattice.toml:32: min_cell_size 1.2 is below the model's horizon 1.5"},
     {"not toml", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = 0.05 0.06"); },
      "lattice.toml:7: not valid TOML"},
     {"unknown table", [](auto d) { edit(d + "/lattice.toml", "[output]", "[outptu]"); },
-     "lattice.toml:35: unknown parameter 'outptu' for the scenario (did you mean 'output'?)"},
+     "lattice.toml:34: unknown parameter 'outptu' for the scenario (did you mean 'output'?)"},
     {"unknown output key",
      [](auto d) { edit(d + "/lattice.toml", "restart_every", "restart_evry"); },
-     "lattice.toml:37: unknown parameter 'restart_evry' for [output] (did you mean "
+     "lattice.toml:36: unknown parameter 'restart_evry' for [output] (did you mean "
      "'restart_every'?)"},
     {"unknown attribute", [](auto d) { edit(d + "/lattice.toml", "\"vx\"", "\"vq\""); },
      "lattice.toml:15: the model has no attribute 'vq'"},
     {"unknown history id", [](auto d) { edit(d + "/lattice.toml", "[0, 127]", "[0, 128]"); },
-     "lattice.toml:40: history_ids: 128 is not a particle's ID"},
+     "lattice.toml:39: history_ids: 128 is not a particle's ID"},
     {"missing steps", [](auto d) { edit(d + "/lattice.toml", "steps = 40", "stepz = 40"); },
      "lattice.toml: missing steps"},
 };
@@ -107,7 +109,7 @@ TEST(CliBadInput, ThesisFilesNameFileAndLine) {
   };
   const std::vector<DatCase> datCases = {
       {"unknown parameter", [&] { edit(dir + "/dat/pdQUserInput.dat", "dt ", "dT "); },
-       "pdQUserInput.dat:4: unknown parameter 'dT'"},
+       "pdQUserInput.dat:3: unknown parameter 'dT'"},
       {"unknown model", [&] { edit(dir + "/dat/pdQUserInput.dat", "spring", "sprin"); },
        "pdQUserInput.dat:1: unknown model 'sprin' (did you mean 'spring'?)"},
       {"malformed number", [&] { edit(dir + "/dat/pdQInput.dat", "0 0 0", "0 x 0"); },

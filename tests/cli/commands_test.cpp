@@ -10,8 +10,8 @@
 namespace fs = std::filesystem;
 using pdq::test::filesUnder;
 using pdq::test::freshDir;
-using pdq::test::runPdq;
 using pdq::test::readFile;
+using pdq::test::runPdq;
 using pdq::test::springCase;
 using testing::HasSubstr;
 
@@ -80,8 +80,8 @@ TEST(Cli, RunWritesItsOutputsAndReportsProgress) {
   EXPECT_THAT(r.out, HasSubstr("step 40/40 (100%)"));
   EXPECT_THAT(r.out, HasSubstr("particle-steps/s"));
   const auto files = filesUnder(dir + "/out");
-  for (const char* f : {"ParticleAlterAttrs.10.rst", "ParticleAlterAttrs.40.rst",
-                        "timing.out", "debug.txt", "timehist.dat", "history.csv"})
+  for (const char* f : {"ParticleAlterAttrs.10.rst", "ParticleAlterAttrs.40.rst", "timing.out",
+                        "debug.txt", "timehist.dat", "history.csv"})
     EXPECT_NE(std::find(files.begin(), files.end(), f), files.end()) << f;
   // history.csv: globals at steps 0, 5, ..., 40 and a header.
   const std::string hist = readFile(dir + "/out/history.csv");
@@ -110,16 +110,15 @@ TEST(Cli, RestartContinuesBitwise) {
   ASSERT_FALSE(whole.empty());
   fs::copy(dir + "/out", dir + "/first");
   fs::remove_all(dir + "/out");
-  const auto r = runPdq({"run", sc, "-q", "--restart", "first/ParticleAlterAttrs.10.rst",
-                      "--out", "second"},
-                     dir);
+  const auto r = runPdq(
+      {"run", sc, "-q", "--restart", "first/ParticleAlterAttrs.10.rst", "--out", "second"}, dir);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_EQ(readFile(dir + "/second/ParticleAlterAttrs.30.rst"), whole);
   EXPECT_EQ(readFile(dir + "/second/Bonds.30.rst"), wholeBonds);
 
-  const auto past = runPdq({"run", sc, "--restart", "first/ParticleAlterAttrs.30.rst",
-                         "--steps", "20", "--out", "third"},
-                        dir);
+  const auto past = runPdq({"run", sc, "--restart", "first/ParticleAlterAttrs.30.rst", "--steps",
+                            "20", "--out", "third"},
+                           dir);
   EXPECT_EQ(past.code, 1);
   EXPECT_THAT(past.err, HasSubstr("beyond the run's last step 20"));
   EXPECT_FALSE(fs::exists(dir + "/third"));
@@ -145,30 +144,38 @@ TEST(Cli, PrepWritesTheThesisFiles) {
 
 TEST(Cli, PostDrawsPicturesAndPlots) {
   const std::string dir = freshDir("post");
-  const std::string sc = springCase(dir, 20);
+  const std::string sc =
+      springCase(dir, 20, "\n[output.picture]\ncolour_by = \"damage\"\nwidth = 800\n");
   ASSERT_EQ(runPdq({"run", sc, "-q"}, dir).code, 0);
-  auto r = runPdq({"post", "picture", sc, "--set", "colour_by=damage", "--set", "magnification=5"},
-               dir);
-  ASSERT_EQ(r.code, 0) << r.all();
-  EXPECT_THAT(r.out, HasSubstr("step 20"));
   const std::string png = readFile(dir + "/out/damage_000020.png");
   ASSERT_GT(png.size(), 1000u);
   EXPECT_EQ(png.substr(1, 3), "PNG");
-  r = runPdq({"post", "picture", sc, "--restart", "out/ParticleAlterAttrs.10.rst", "-o",
-           "early.svg"},
-          dir);
+  // From the last restart file, the picture the run drew, to the byte.
+  auto r = runPdq({"post", "picture", sc, "-o", "again.png"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.out, HasSubstr("step 20"));
+  EXPECT_TRUE(readFile(dir + "/again.png") == png);
+  // Other options on the command line: a different picture, in the output folder.
+  r = runPdq({"post", "picture", sc, "--set", "magnification=5", "--set", "name=big"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  const std::string big = readFile(dir + "/out/big_000020.png");
+  EXPECT_EQ(big.substr(1, 3), "PNG");
+  EXPECT_FALSE(big == png);
+  r = runPdq(
+      {"post", "picture", sc, "--restart", "out/ParticleAlterAttrs.10.rst", "-o", "early.svg"},
+      dir);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_THAT(readFile(dir + "/early.svg"), HasSubstr("<svg"));
   r = runPdq({"post", "picture", sc, "--set", "colour_by=damag"}, dir);
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("did you mean 'damage'"));
 
-  r = runPdq({"post", "plot", "out/history.csv", "-x", "step", "-y", "broken_bonds", "-o",
-           "broken.png"},
-          dir);
+  r = runPdq(
+      {"post", "plot", "out/history.csv", "-x", "step", "-y", "broken_bonds", "-o", "broken.png"},
+      dir);
   ASSERT_EQ(r.code, 0) << r.all();
   EXPECT_EQ(readFile(dir + "/broken.png").substr(1, 3), "PNG");
-  r = runPdq({"post", "plot", "out/history.csv", "-y", "brokn"}, dir);
+  r = runPdq({"post", "plot", "out/history.csv", "-y", "broken_bond"}, dir);
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("did you mean 'broken_bonds'"));
   EXPECT_FALSE(fs::exists(dir + "/out/history.png"));

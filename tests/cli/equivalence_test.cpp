@@ -7,8 +7,8 @@
 #include "spring_case.hpp"
 
 using pdq::test::freshDir;
-using pdq::test::runPdq;
 using pdq::test::readFile;
+using pdq::test::runPdq;
 using pdq::test::springCase;
 
 namespace {

@@ -22,9 +22,11 @@ inline std::string springCase(const std::string& dir, long steps, const std::str
     }
   writeFile(dir + "/fixed.dat", fixed);
   writeFile(dir + "/alter.dat", alter);
-  const std::string scenario = "# a breaking spring lattice\n"
-                               "steps = " + std::to_string(steps) + "\n" +
-                               R"(
+  const std::string scenario =
+      "# a breaking spring lattice\n"
+      "steps = " +
+      std::to_string(steps) + "\n" +
+      R"(
 [model]
 name = "spring"
 critical_stretch = 0.02
