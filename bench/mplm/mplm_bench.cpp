@@ -62,9 +62,9 @@ int main(int argc, char** argv) {
       const double secs =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       if (comm.root())
-        std::printf("%s: %zu particles, %ld steps on %d rank(s): %.2f s (%s at %g %s)\n",
-                    ex.name.c_str(), ex.particles.size(), tr.steps, comm.size(), secs,
-                    tr.holds ? "holds" : "fails", load, ex.unit.c_str());
+        std::printf("%s: %zu particles, %ld steps on %d rank(s): %.2f s (load %g %s)\n",
+                    ex.name.c_str(), ex.particles.size(), tr.steps, comm.size(), secs, load,
+                    ex.unit.c_str());
     } else if (what == "trial") {
       const mplm::Trial tr = mplm::runTrial(ex, nums.at(0), comm, opt);
       if (comm.root())

@@ -11,9 +11,8 @@
 namespace pdq::mplm {
 namespace {
 
-double globalValue(Simulation& sim, const std::vector<std::string>& names,
-                   const std::vector<double>& values, const std::string& name) {
-  (void)sim;
+double globalValue(const std::vector<std::string>& names, const std::vector<double>& values,
+                   const std::string& name) {
   for (std::size_t k = 0; k < names.size(); ++k)
     if (names[k] == name) return values[k];
   return 0;
@@ -102,8 +101,7 @@ Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions
     const long step = sim.step();
     if (step != holdStart && step != mid && step % check != 0) continue;
     const auto values = sim.model().globalValues(sim.context());
-    const double u =
-        std::hypot(globalValue(sim, names, values, "ux"), globalValue(sim, names, values, "uy"));
+    const double u = std::hypot(globalValue(names, values, "ux"), globalValue(names, values, "uy"));
     if (!std::isfinite(u)) {
       runaway = true;
       break;
@@ -111,7 +109,7 @@ Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions
     if (step == holdStart) tr.uHold = u;
     if (step == mid) {
       tr.uMid = u;
-      tr.brokenMid = globalValue(sim, names, values, "broken");
+      tr.brokenMid = globalValue(names, values, "broken");
     }
     if (step >= holdStart && tr.uHold > 0 && u > opt.runaway * tr.uHold) {
       runaway = true;
@@ -120,9 +118,8 @@ Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions
   }
   tr.steps = sim.step();
   const auto values = sim.model().globalValues(sim.context());
-  tr.uEnd =
-      std::hypot(globalValue(sim, names, values, "ux"), globalValue(sim, names, values, "uy"));
-  tr.brokenEnd = globalValue(sim, names, values, "broken");
+  tr.uEnd = std::hypot(globalValue(names, values, "ux"), globalValue(names, values, "uy"));
+  tr.brokenEnd = globalValue(names, values, "broken");
   tr.holds = !runaway && std::isfinite(tr.uEnd) &&
              tr.brokenEnd - tr.brokenMid <= opt.lateBreaks * tr.brokenEnd + 1 &&
              std::fabs(tr.uEnd - tr.uMid) <= opt.settle * std::fabs(tr.uMid);
