@@ -78,7 +78,6 @@ int cantilever(int argc, char** argv, Comm& comm) {
   Problem pb = readThesisInput(dir);
   if (argc >= 7) pb.run.procs = {std::stoi(argv[5]), std::stoi(argv[6]), 1};
   pb.run.outDir = dir + "/out";
-  pb.run.finalRestart = false;
   const std::size_t nParticles = pb.particles.size();
   Gid monitored = 0;
   for (Gid g : pb.particles.gid) monitored = std::max(monitored, g);
