@@ -308,8 +308,19 @@ class Mplm2d final : public Model {
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < nl; ++i) {
       const double th = P.alter(i)[THETA];
-      cs_[2 * i] = std::cos(th);
-      cs_[2 * i + 1] = std::sin(th);
+      if (std::fabs(th) <= 0.1) {
+        // Particles turn little in most runs: Taylor series, exact to round-off here
+        // (next terms below 1e-22 relative) and several times cheaper than sin and cos.
+        const double t2 = th * th;
+        cs_[2 * i] =
+            1 -
+            t2 / 2 * (1 - t2 / 12 * (1 - t2 / 30 * (1 - t2 / 56 * (1 - t2 / 90 * (1 - t2 / 132)))));
+        cs_[2 * i + 1] =
+            th * (1 - t2 / 6 * (1 - t2 / 20 * (1 - t2 / 42 * (1 - t2 / 72 * (1 - t2 / 110)))));
+      } else {
+        cs_[2 * i] = std::cos(th);
+        cs_[2 * i + 1] = std::sin(th);
+      }
     }
   }
 
