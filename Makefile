@@ -30,7 +30,7 @@ bench: deps-test build
 	bash bench/run.sh $(BUILD)
 
 validate: build
-	bash tools/validate.sh $(BUILD)
+	bash bench/mplm/validate.sh $(BUILD)
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp')
