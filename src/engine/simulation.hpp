@@ -33,7 +33,7 @@ struct RunConfig {
   long firstStep = 0;  // a restarted run continues from here
   std::string outDir = ".";
   std::string source = "input";  // file named in configuration errors
-  long checkEvery = 100;  // scan for non-finite positions every N steps
+  long checkEvery = 100;         // scan for non-finite positions every N steps
 };
 
 // Bond attributes to restore after setup (a restart), keyed by (owner, partner) IDs.

@@ -78,12 +78,15 @@ void RestartOutput::write(OutputContext& out) {
   }
   const auto all = gatherSortedRows(out.comm, rows, 1 + nA);
   const long nBondsTotal = out.comm.sum(static_cast<long>(B.count()));
-  const auto allBonds = nBondsTotal ? gatherSortedRows(out.comm, brows, 3 + nB, 2) : std::vector<double>{};
-  const auto allFixed = withFixed ? gatherSortedRows(out.comm, frows, 1 + nF) : std::vector<double>{};
+  const auto allBonds =
+      nBondsTotal ? gatherSortedRows(out.comm, brows, 3 + nB, 2) : std::vector<double>{};
+  const auto allFixed =
+      withFixed ? gatherSortedRows(out.comm, frows, 1 + nF) : std::vector<double>{};
   if (!out.comm.root()) return;
   std::string line;
   if (withFixed) {
-    std::string header = "# pdq fixed attributes: step " + std::to_string(out.step) + "\n# columns: id";
+    std::string header =
+        "# pdq fixed attributes: step " + std::to_string(out.step) + "\n# columns: id";
     for (const auto& n : s.fixed) header += " " + n;
     writeRows(fixedRestartPath(out.outDir, out.step), header + "\n", allFixed, 1 + nF);
   }
@@ -94,8 +97,8 @@ void RestartOutput::write(OutputContext& out) {
     f.stream() << "\n";
     for (std::size_t r = 0; r < allBonds.size() / (3 + nB); ++r) {
       const double* row = &allBonds[r * (3 + nB)];
-      line = std::to_string(static_cast<Gid>(row[0])) + " " + std::to_string(static_cast<Gid>(row[1])) +
-             (row[2] != 0 ? " 1" : " 0");
+      line = std::to_string(static_cast<Gid>(row[0])) + " " +
+             std::to_string(static_cast<Gid>(row[1])) + (row[2] != 0 ? " 1" : " 0");
       for (int c = 0; c < nB; ++c) appendNumber(line, row[3 + c]);
       f.stream() << line << "\n";
     }

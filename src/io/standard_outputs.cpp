@@ -15,7 +15,8 @@ void addStandardOutputs(Simulation& sim, const OutputSettings& o) {
   if (o.globalsEvery > 0 && !sim.model().globals().empty())
     sim.addOutput(std::make_unique<GlobalsOutput>(o.globalsEvery));
   if (o.paraview) sim.addOutput(std::make_unique<VtuOutput>(vtuOptions(*o.paraview)));
-  if (o.picture) sim.addOutput(std::make_unique<post::PictureOutput>(post::pictureOptions(*o.picture)));
+  if (o.picture)
+    sim.addOutput(std::make_unique<post::PictureOutput>(post::pictureOptions(*o.picture)));
 }
 
 }  // namespace pdq

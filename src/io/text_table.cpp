@@ -49,7 +49,8 @@ std::vector<TextRecord> readNumberTable(const std::string& path, int columns,
       while (q < stop && (*q == ' ' || *q == '\t' || *q == '\r' || *q == ',')) ++q;
       if (q >= stop) break;
       const char* tokEnd = q;
-      while (tokEnd < stop && *tokEnd != ' ' && *tokEnd != '\t' && *tokEnd != '\r' && *tokEnd != ',')
+      while (tokEnd < stop && *tokEnd != ' ' && *tokEnd != '\t' && *tokEnd != '\r' &&
+             *tokEnd != ',')
         ++tokEnd;
       double v = 0;
       const char* b = q;
@@ -57,11 +58,13 @@ std::vector<TextRecord> readNumberTable(const std::string& path, int columns,
       auto [ptr, ec] = std::from_chars(b, tokEnd, v);
       const std::string tok(q, tokEnd);
       if (ec != std::errc() || ptr != tokEnd)
-        throw InputError(path, line, "'" + tok + "' is not a number (column " +
-                                         std::to_string(rec.values.size() + 1) + ")");
+        throw InputError(
+            path, line,
+            "'" + tok + "' is not a number (column " + std::to_string(rec.values.size() + 1) + ")");
       if (!std::isfinite(v))
-        throw InputError(path, line, "'" + tok + "' is not a finite number (column " +
-                                         std::to_string(rec.values.size() + 1) + ")");
+        throw InputError(path, line,
+                         "'" + tok + "' is not a finite number (column " +
+                             std::to_string(rec.values.size() + 1) + ")");
       rec.values.push_back(v);
       q = tokEnd;
     }

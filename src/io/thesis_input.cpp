@@ -29,8 +29,7 @@ void readKeyValues(const std::string& path, const std::vector<std::pair<int, std
     in >> key;
     while (in >> word) rest += (rest.empty() ? "" : " ") + word;
     if (rest.empty()) throw InputError(path, lines[k].first, "'" + key + "' has no value");
-    if (into.raw(key))
-      throw InputError(path, lines[k].first, "'" + key + "' is given twice");
+    if (into.raw(key)) throw InputError(path, lines[k].first, "'" + key + "' is given twice");
     into.set(key, rest, path, lines[k].first);
   }
 }
@@ -82,8 +81,9 @@ ParticleSet readParticleFiles(const std::string& fixedPath, const std::string& a
   }
   for (std::size_t k = 0; k < seen.size(); ++k)
     if (!seen[k])
-      throw InputError(alterPath, 0,
-                       "global ID " + std::to_string(ps.gid[k]) + " of " + fixedPath + " is missing");
+      throw InputError(
+          alterPath, 0,
+          "global ID " + std::to_string(ps.gid[k]) + " of " + fixedPath + " is missing");
   return ps;
 }
 
@@ -104,8 +104,9 @@ Problem readThesisInput(const std::string& dir) {
       std::istringstream num(tok);
       if (!(num >> v) || !num.eof())
         throw InputError(input, lines[k].first,
-                         "'" + tok + "' is not a number (expected nPX nPY nPZ, minimum cell size, "
-                                     "number of time steps)");
+                         "'" + tok +
+                             "' is not a number (expected nPX nPY nPZ, minimum cell size, "
+                             "number of time steps)");
       head.push_back(v);
       if (head.size() == 4) cellLine = lines[k].first;
     }
@@ -131,17 +132,20 @@ Problem readThesisInput(const std::string& dir) {
   pb.run.dim = static_cast<int>(engine.integer("dimension", 0));
   if (engine.has("periodic")) {
     const auto f = engine.numbers("periodic");
-    if (f.size() != 3) throw InputError(input, engine.raw("periodic")->line, "periodic needs 3 flags (0/1)");
+    if (f.size() != 3)
+      throw InputError(input, engine.raw("periodic")->line, "periodic needs 3 flags (0/1)");
     for (int a = 0; a < 3; ++a) pb.run.periodic[a] = f[a] != 0;
     const auto lo = engine.numbers("box_lo"), hi = engine.numbers("box_hi");
     if (lo.size() != 3 || hi.size() != 3)
-      throw InputError(input, engine.raw("periodic")->line, "box_lo and box_hi need 3 numbers each");
+      throw InputError(input, engine.raw("periodic")->line,
+                       "box_lo and box_hi need 3 numbers each");
     for (int a = 0; a < 3; ++a) pb.run.boxLo[a] = lo[a], pb.run.boxHi[a] = hi[a];
   }
   pb.output.restartEvery = engine.integer("restart_every", 0);
   pb.output.historyEvery = engine.integer("history_every", 0);
   if (engine.has("history_ids"))
-    for (double v : engine.numbers("history_ids")) pb.output.historyIds.push_back(static_cast<Gid>(v));
+    for (double v : engine.numbers("history_ids"))
+      pb.output.historyIds.push_back(static_cast<Gid>(v));
   pb.output.globalsEvery = engine.integer("globals_every", 0);
   engine.checkAllUsed();
 
@@ -194,8 +198,8 @@ void writeThesisInput(const std::string& dir, const Problem& pb, const Params& m
   if (pb.run.margin >= 0) in << "margin " << fmt17(pb.run.margin) << "\n";
   if (pb.run.dim) in << "dimension " << pb.run.dim << "\n";
   if (pb.run.periodic[0] || pb.run.periodic[1] || pb.run.periodic[2]) {
-    in << "periodic " << pb.run.periodic[0] << " " << pb.run.periodic[1] << " " << pb.run.periodic[2]
-       << "\nbox_lo";
+    in << "periodic " << pb.run.periodic[0] << " " << pb.run.periodic[1] << " "
+       << pb.run.periodic[2] << "\nbox_lo";
     for (double v : pb.run.boxLo) in << " " << fmt17(v);
     in << "\nbox_hi";
     for (double v : pb.run.boxHi) in << " " << fmt17(v);

@@ -14,13 +14,13 @@
 namespace pdq {
 
 struct OutputSettings {
-  long restartEvery = 0;            // ParticleAlterAttrs.<step>.rst (+ Bonds.<step>.rst)
-  bool finalRestart = true;         // also at the last step
-  long historyEvery = 0;            // timehist.dat rows for historyIds
+  long restartEvery = 0;     // ParticleAlterAttrs.<step>.rst (+ Bonds.<step>.rst)
+  bool finalRestart = true;  // also at the last step
+  long historyEvery = 0;     // timehist.dat rows for historyIds
   std::vector<Gid> historyIds;
-  long globalsEvery = 0;            // history.csv: the model's global values
-  std::unique_ptr<Params> paraview; // [output.paraview] table, if any (io/vtu_output.hpp)
-  std::unique_ptr<Params> picture;  // [output.picture] table, if any (post/picture_output.hpp)
+  long globalsEvery = 0;             // history.csv: the model's global values
+  std::unique_ptr<Params> paraview;  // [output.paraview] table, if any (io/vtu_output.hpp)
+  std::unique_ptr<Params> picture;   // [output.picture] table, if any (post/picture_output.hpp)
 };
 
 struct Problem {

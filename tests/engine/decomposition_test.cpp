@@ -1,6 +1,7 @@
+#include "engine/decomposition.hpp"
+
 #include <gtest/gtest.h>
 
-#include "engine/decomposition.hpp"
 #include "engine/error.hpp"
 
 namespace pdq {

@@ -52,10 +52,10 @@ void checkAllLayouts(bool shuffle) {
   int world = 1, rank = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &world);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  const std::vector<Layout> layouts = {
-      {1, {1, 1, 1}, 1}, {1, {1, 1, 1}, 2}, {2, {2, 1, 1}, 1}, {2, {1, 2, 1}, 2},
-      {3, {3, 1, 1}, 1}, {3, {1, 1, 3}, 1}, {4, {4, 1, 1}, 1}, {4, {2, 2, 1}, 2},
-      {4, {1, 4, 1}, 1}, {4, {1, 2, 2}, 1}, {4, {0, 0, 0}, 1}};
+  const std::vector<Layout> layouts = {{1, {1, 1, 1}, 1}, {1, {1, 1, 1}, 2}, {2, {2, 1, 1}, 1},
+                                       {2, {1, 2, 1}, 2}, {3, {3, 1, 1}, 1}, {3, {1, 1, 3}, 1},
+                                       {4, {4, 1, 1}, 1}, {4, {2, 2, 1}, 2}, {4, {1, 4, 1}, 1},
+                                       {4, {1, 2, 2}, 1}, {4, {0, 0, 0}, 1}};
   test::State reference;
   bool haveReference = false;
   for (const Layout& l : layouts) {
@@ -81,9 +81,9 @@ void checkAllLayouts(bool shuffle) {
         for (std::size_t b = 0; b < s.bonds.size() / 4; ++b) broken += s.bonds[b * 4 + 2];
         EXPECT_GT(broken, 0);
       } else {
-        EXPECT_TRUE(s == reference) << "differs on " << l.ranks << " ranks, grid " << l.grid[0]
-                                    << "x" << l.grid[1] << "x" << l.grid[2] << ", " << l.threads
-                                    << " threads";
+        EXPECT_TRUE(s == reference)
+            << "differs on " << l.ranks << " ranks, grid " << l.grid[0] << "x" << l.grid[1] << "x"
+            << l.grid[2] << ", " << l.threads << " threads";
       }
     }
   }

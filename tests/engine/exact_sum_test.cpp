@@ -1,10 +1,10 @@
+#include "engine/exact_sum.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
-
-#include "engine/exact_sum.hpp"
 
 namespace pdq {
 namespace {
@@ -13,7 +13,8 @@ TEST(ExactSum, OrderDoesNotMatter) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   std::vector<double> v;
-  for (int i = 0; i < 20000; ++i) v.push_back(std::ldexp(u(rng), static_cast<int>(rng() % 80) - 40));
+  for (int i = 0; i < 20000; ++i)
+    v.push_back(std::ldexp(u(rng), static_cast<int>(rng() % 80) - 40));
   ExactSum a;
   for (double x : v) a.add(x);
   std::shuffle(v.begin(), v.end(), rng);

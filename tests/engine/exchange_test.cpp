@@ -8,8 +8,8 @@ namespace pdq {
 namespace {
 
 Simulation makeRun(Comm& comm, int nz, bool shuffle, long steps) {
-  auto model = test::makeModel("spring", {{"horizon", "1.5"}, {"dt", "0.05"},
-                                          {"shuffle", shuffle ? "true" : "false"}});
+  auto model = test::makeModel(
+      "spring", {{"horizon", "1.5"}, {"dt", "0.05"}, {"shuffle", shuffle ? "true" : "false"}});
   ParticleSet ps = test::cubicBlock(model->schema(), 12, 12, nz, 1.0);
   for (std::size_t k = 0; k < ps.size(); ++k) ps.alterRow(k)[3] = (ps.gid[k] % 2 ? 0.2 : -0.2);
   RunConfig cfg;
@@ -25,8 +25,10 @@ TEST(Exchange, HaloMessagesAndBytes3D) {
   const StepStats& s = sim.stats();
   EXPECT_LE(s.haloMessages, 6u);
   EXPECT_EQ(s.haloBytes, s.haloWallParticles * sim.particles().schema().nAlter() * sizeof(double));
-  if (comm.size() > 1) EXPECT_GT(s.haloMessages, 0u);
-  else EXPECT_EQ(s.haloMessages, 0u);
+  if (comm.size() > 1)
+    EXPECT_GT(s.haloMessages, 0u);
+  else
+    EXPECT_EQ(s.haloMessages, 0u);
 }
 
 TEST(Exchange, HaloMessages2D) {

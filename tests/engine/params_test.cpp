@@ -1,7 +1,8 @@
+#include "engine/params.hpp"
+
 #include <gtest/gtest.h>
 
 #include "engine/error.hpp"
-#include "engine/params.hpp"
 
 namespace pdq {
 namespace {

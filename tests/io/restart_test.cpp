@@ -1,6 +1,8 @@
 // A run restarted from ParticleAlterAttrs.<step>.rst (with its Bonds.<step>.rst) ends with
 // the same bits as the uninterrupted run, for a bonded lattice with breaking springs, with
 // particles fixed in their cells and with shuffling across periodic boundaries.
+#include "io/restart.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +10,6 @@
 #include <fstream>
 
 #include "engine/error.hpp"
-#include "io/restart.hpp"
 #include "io/standard_outputs.hpp"
 #include "support/harness.hpp"
 
@@ -18,7 +19,8 @@ namespace {
 Problem springProblem(bool shuffle, const std::string& dir) {
   Problem pb;
   pb.modelName = "spring";
-  pb.model = test::makeModel("spring", {{"horizon", "1.5"}, {"dt", "0.05"},
+  pb.model = test::makeModel("spring", {{"horizon", "1.5"},
+                                        {"dt", "0.05"},
                                         {"critical_stretch", "0.08"},
                                         {"shuffle", shuffle ? "true" : "false"}});
   pb.particles = test::cubicBlock(pb.model->schema(), 8, 6, 5, 1.0);

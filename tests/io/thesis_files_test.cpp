@@ -67,7 +67,8 @@ TEST(ThesisFiles, RoundTrip) {
 }
 
 TEST(ThesisFiles, BadInputNamesFileAndLine) {
-  const std::string fixed = kDir + "/ParticleFixedAttrs.dat", alter = kDir + "/ParticleAlterAttrs.dat";
+  const std::string fixed = kDir + "/ParticleFixedAttrs.dat",
+                    alter = kDir + "/ParticleAlterAttrs.dat";
   writeSpringSet();
   replaceLine(fixed, 3, "2 0.5 0.0x 0");
   expectError(fixed, 3, "'0.0x' is not a number");

@@ -145,6 +145,5 @@ TEST_P(LjForce, IsMinusTheGradientOfThePotentialEnergy) {
 
 INSTANTIATE_TEST_SUITE_P(Shifts, LjForce, ::testing::Values("none", "energy", "force"));
 
-
 }  // namespace
 }  // namespace pdq

@@ -59,7 +59,8 @@ TEST(PictureOutput, GathersAndDrawsDamage) {
   ASSERT_EQ(snap.bonds.size(), bonds.size());
   EXPECT_EQ(snap.names, (std::vector<std::string>{"vx", "vy", "vz", "damage"}));
   for (std::size_t b = 0; b < snap.bonds.size(); ++b)
-    EXPECT_EQ(snap.bondAttrs[b * snap.bondNames.size()], bonds.at({snap.id[snap.bonds[b][0]], snap.id[snap.bonds[b][1]]}));
+    EXPECT_EQ(snap.bondAttrs[b * snap.bondNames.size()],
+              bonds.at({snap.id[snap.bonds[b][0]], snap.id[snap.bonds[b][1]]}));
 
   // The same snapshot rebuilt as `pdq post` would from files: particles in another
   // order, every bond listed from both ends.
@@ -83,7 +84,8 @@ TEST(PictureOutput, GathersAndDrawsDamage) {
       owner.push_back(snap.id[snap.bonds[b][side]]);
       partner.push_back(snap.id[snap.bonds[b][1 - side]]);
       const std::size_t nb = snap.bondNames.size();
-      attrs.insert(attrs.end(), snap.bondAttrs.begin() + b * nb, snap.bondAttrs.begin() + (b + 1) * nb);
+      attrs.insert(attrs.end(), snap.bondAttrs.begin() + b * nb,
+                   snap.bondAttrs.begin() + (b + 1) * nb);
     }
   post::addBonds(files, owner, partner, attrs, "restart");
   EXPECT_EQ(files.id, snap.id);

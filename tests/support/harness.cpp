@@ -18,7 +18,8 @@ MPI_Comm firstRanks(int n) {
 
 bool State::operator==(const State& o) const {
   return particles.size() == o.particles.size() && bonds.size() == o.bonds.size() &&
-         std::memcmp(particles.data(), o.particles.data(), particles.size() * sizeof(double)) == 0 &&
+         std::memcmp(particles.data(), o.particles.data(), particles.size() * sizeof(double)) ==
+             0 &&
          std::memcmp(bonds.data(), o.bonds.data(), bonds.size() * sizeof(double)) == 0;
 }
 
@@ -37,8 +38,7 @@ static std::vector<double> sortRows(std::vector<std::vector<char>> blocks, int w
     return false;
   });
   std::vector<double> out(all.size());
-  for (std::size_t k = 0; k < n; ++k)
-    std::copy_n(&all[idx[k] * width], width, &out[k * width]);
+  for (std::size_t k = 0; k < n; ++k) std::copy_n(&all[idx[k] * width], width, &out[k * width]);
   return out;
 }
 

@@ -58,9 +58,7 @@ class LennardJones final : public Model {
   void prepare(Context& ctx) override { buildLists(ctx); }
   void neighboursChanged(Context& ctx) override { buildLists(ctx); }
 
-  void force(Context& ctx) override {
-    evaluate(ctx.particles, forces(ctx.particles), nullptr);
-  }
+  void force(Context& ctx) override { evaluate(ctx.particles, forces(ctx.particles), nullptr); }
 
   void integrate(Context& ctx) override {
     Particles& P = ctx.particles;
@@ -134,9 +132,7 @@ class LennardJones final : public Model {
   }
   static double* forces(Particles& P) { return P.owned() ? P.integ(0) : nullptr; }
 
-  void buildLists(Context& ctx) {
-    lists_.build(ctx, ctx.cellSize());
-  }
+  void buildLists(Context& ctx) { lists_.build(ctx, ctx.cellSize()); }
 
   PairLJ pair_;
   double mass_ = 1, skin_ = 0.3, dt_ = 0.005;
