@@ -1,10 +1,9 @@
 #include "support/harness.hpp"
 
-#include <algorithm>
 #include <cstring>
-#include <numeric>
 
 #include "engine/comm.hpp"
+#include "io/gather.hpp"
 
 namespace pdq::test {
 
@@ -23,25 +22,6 @@ bool State::operator==(const State& o) const {
          std::memcmp(bonds.data(), o.bonds.data(), bonds.size() * sizeof(double)) == 0;
 }
 
-static std::vector<double> sortRows(std::vector<std::vector<char>> blocks, int width, int keys) {
-  std::vector<double> all;
-  for (auto& b : blocks) {
-    const double* d = reinterpret_cast<const double*>(b.data());
-    all.insert(all.end(), d, d + b.size() / sizeof(double));
-  }
-  const std::size_t n = width ? all.size() / width : 0;
-  std::vector<std::size_t> idx(n);
-  std::iota(idx.begin(), idx.end(), 0);
-  std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
-    for (int k = 0; k < keys; ++k)
-      if (all[a * width + k] != all[b * width + k]) return all[a * width + k] < all[b * width + k];
-    return false;
-  });
-  std::vector<double> out(all.size());
-  for (std::size_t k = 0; k < n; ++k) std::copy_n(&all[idx[k] * width], width, &out[k * width]);
-  return out;
-}
-
 State gatherState(Simulation& sim) {
   Particles& P = sim.particles();
   Bonds& B = sim.bonds();
@@ -57,13 +37,9 @@ State gatherState(Simulation& sim) {
       brows.insert(brows.end(), B.attr(b), B.attr(b) + nB);
     }
   }
-  auto bytes = [](const std::vector<double>& v) {
-    return std::vector<char>(reinterpret_cast<const char*>(v.data()),
-                             reinterpret_cast<const char*>(v.data() + v.size()));
-  };
   State s;
-  s.particles = sortRows(sim.comm().gather(bytes(rows)), 1 + nA, 1);
-  s.bonds = sortRows(sim.comm().gather(bytes(brows)), 3 + nB, 2);
+  s.particles = gatherSortedRows(sim.comm(), rows, 1 + nA, 1);
+  s.bonds = gatherSortedRows(sim.comm(), brows, 3 + nB, 2);
   return s;
 }
 
