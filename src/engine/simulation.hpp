@@ -96,7 +96,7 @@ class Simulation {
   StepStats stats_;
   long step_ = 0;
   double slack_ = 0;
-  bool setUp_ = false, ended_ = false, lastWritten_ = false;
+  bool setUp_ = false, ended_ = false;
 };
 
 }  // namespace pdq
