@@ -144,6 +144,7 @@ bool Simulation::advance() {
     Timers::Scope t(timers_, Phase::Integrate);
     model_->integrate(*ctx_);
   }
+  bool shuffleNow = false;
   if (model_->shuffles()) {
     // Shuffle once some particle may have moved far enough to change neighbours, and at
     // steps whose state is saved for a restart, so that a restarted run starts from the
@@ -151,23 +152,17 @@ bool Simulation::advance() {
     bool saving = false;
     for (const auto& o : outputs_)
       saving |= o->capturesState() && (o->due(step_) || (step_ == cfg_.steps && o->atEnd()));
-    const double moved = comm_.max(cube_->maxDisplacementSinceRebuild());
-    if (moved > slack_ || saving) {
-      Timers::Scope t(timers_, Phase::Shuffle);
-      cube_->shuffle(step_);
-      model_->neighboursChanged(*ctx_);
-      stats_.shuffles++;
-      stats_.maxShuffleMessages =
-          std::max(stats_.maxShuffleMessages, cube_->stats().shuffleMessages);
-    } else {
-      Timers::Scope t(timers_, Phase::Communication);
-      cube_->halo();
-    }
+    shuffleNow = comm_.max(cube_->maxDisplacementSinceRebuild()) > slack_ || saving;
+  }
+  if (shuffleNow) {
+    Timers::Scope t(timers_, Phase::Shuffle);
+    cube_->shuffle(step_);
+    model_->neighboursChanged(*ctx_);
+    stats_.shuffles++;
+    stats_.maxShuffleMessages = std::max(stats_.maxShuffleMessages, cube_->stats().shuffleMessages);
   } else {
     Timers::Scope t(timers_, Phase::Communication);
     cube_->halo();
-  }
-  if (cube_->stats().haloMessages || !model_->shuffles()) {
     stats_.haloMessages = cube_->stats().haloMessages;
     stats_.haloBytes = cube_->stats().haloBytes;
     stats_.haloWallParticles = cube_->stats().haloWallParticles;
