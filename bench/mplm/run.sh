@@ -3,7 +3,7 @@
 # 4.06 m beam of §4.4.6 (45 000 steps) on 2 ranks in under a minute.
 # Usage: bench/mplm/run.sh [build-dir]
 set -euo pipefail
-build=${1:-build}
+build=$(cd "${1:-build}" && pwd)
 exe=$build/bench/mplm/mplm_bench
 mpirun=(mpirun --oversubscribe --allow-run-as-root)
 cd "$(mktemp -d)"

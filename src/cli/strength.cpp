@@ -10,7 +10,8 @@ void strengthCommand(const StrengthCommandOptions& o) {
   Comm comm(MPI_COMM_WORLD);
   Scenario sc = loadScenario(o.input);
   const auto& driver = StrengthRegistry::get(sc.problem.modelName, o.input);
-  Params options = commandLineParams(o.set, "the strength search");
+  Params options = sc.strength;  // the scenario's [strength] table, then --set items
+  setFromCommandLine(options, o.set);
   driver(sc, options, comm);
   options.checkAllUsed();
 }

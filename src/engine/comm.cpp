@@ -9,6 +9,30 @@ Comm::Comm(MPI_Comm comm) : comm_(comm) {
   MPI_Comm_size(comm_, &size_);
 }
 
+Comm::~Comm() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (owned_ && !finalized) MPI_Comm_free(&comm_);
+}
+
+Comm::Comm(Comm&& o) noexcept
+    : comm_(o.comm_),
+      owned_(o.owned_),
+      rank_(o.rank_),
+      size_(o.size_),
+      messages_(o.messages_),
+      bytes_(o.bytes_) {
+  o.owned_ = false;
+}
+
+Comm Comm::split(int colour) const {
+  MPI_Comm sub;
+  MPI_Comm_split(comm_, colour, rank_, &sub);
+  Comm c(sub);
+  c.owned_ = true;
+  return c;
+}
+
 void Comm::sendrecv(const std::vector<char>& out, int dest, std::vector<char>& in, int src,
                     int tag) {
   MPI_Request req = MPI_REQUEST_NULL;

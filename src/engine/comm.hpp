@@ -15,6 +15,16 @@ class Comm {
   // MPI must be initialised (see MpiSession). Tests run several simulations side by side
   // on sub-communicators; the pdq command uses MPI_COMM_WORLD.
   explicit Comm(MPI_Comm comm = MPI_COMM_WORLD);
+  ~Comm();
+  Comm(const Comm&) = delete;
+  Comm& operator=(const Comm&) = delete;
+  Comm(Comm&& o) noexcept;
+
+  // The ranks of equal `colour` as a communicator of their own (in rank order), freed with
+  // the returned Comm; collective over this one. Used to run independent simulations side
+  // by side (the trials of a strength search).
+  Comm split(int colour) const;
+
   int rank() const { return rank_; }
   int size() const { return size_; }
   bool root() const { return rank_ == 0; }
@@ -44,6 +54,7 @@ class Comm {
 
  private:
   MPI_Comm comm_;
+  bool owned_ = false;  // made by split(): freed on destruction
   int rank_ = 0, size_ = 1;
   std::uint64_t messages_ = 0, bytes_ = 0;
 };

@@ -7,11 +7,15 @@
 //
 // where `Generated myLattice(const Params& p, const Schema& schema)` reads its
 // parameters from `p` (unknown ones are reported afterwards) and returns the particles
-// with nFixed/nAlter set to the schema's widths.
+// with nFixed/nAlter set to the schema's widths. A generator that must agree with the
+// model (its lattice spacing, its thickness) takes the [model] table as a third argument,
+// `Generated f(const Params& p, const Schema& schema, const Params& model)`, and reads the
+// model's values from there rather than asking for them twice.
 #include <array>
 #include <functional>
 #include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -30,7 +34,7 @@ struct Generated {
 
 class GeneratorRegistry {
  public:
-  using Generator = std::function<Generated(const Params&, const Schema&)>;
+  using Generator = std::function<Generated(const Params&, const Schema&, const Params& model)>;
   static bool add(const std::string& name, const std::string& description, Generator g);
   // Throws InputError (naming `source` and `line`) for an unknown name, suggesting the
   // nearest and listing the known ones.
@@ -39,9 +43,22 @@ class GeneratorRegistry {
   static std::vector<std::pair<std::string, std::string>> list();  // name, description
 };
 
+namespace detail {
+// Calls a generator with or without the [model] table, whichever it takes.
+template <class F>
+Generated callGenerator(F f, const Params& p, const Schema& s, const Params& model) {
+  if constexpr (std::is_invocable_v<F, const Params&, const Schema&, const Params&>)
+    return f(p, s, model);
+  else
+    return f(p, s);
+}
+}  // namespace detail
+
 }  // namespace pdq
 
 #define PDQ_REGISTER_GENERATOR(function, name, description)                                    \
   static const bool pdq_generator_##function [[maybe_unused]] = ::pdq::GeneratorRegistry::add( \
       name, description,                                                                       \
-      [](const ::pdq::Params& p, const ::pdq::Schema& s) { return function(p, s); })
+      [](const ::pdq::Params& p, const ::pdq::Schema& s, const ::pdq::Params& m) {             \
+        return ::pdq::detail::callGenerator(function, p, s, m);                                \
+      })

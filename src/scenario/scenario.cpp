@@ -130,7 +130,8 @@ void readModel(const toml::table& root, const std::string& file, Scenario& sc) {
   sc.modelParams.checkAllUsed();
 }
 
-Generated readParticles(const toml::table& root, const std::string& file, Problem& pb) {
+Generated readParticles(const toml::table& root, const std::string& file, Scenario& sc) {
+  Problem& pb = sc.problem;
   const toml::table* t = subTable(root, "particles", file);
   if (!t)
     throw InputError(file, 0,
@@ -148,8 +149,10 @@ Generated readParticles(const toml::table& root, const std::string& file, Proble
     const auto& gen = GeneratorRegistry::get(name->text, file, name->line);
     Params gp =
         tableParams(*t, file, "generator '" + name->text + "' ([particles])", {"generator", "set"});
-    g = gen(gp, schema);
+    g = gen(gp, schema, sc.modelParams);
     gp.checkAllUsed();
+    sc.generator = name->text;
+    sc.generatorParams = gp;
     if (g.particles.nFixed != schema.nFixed() || g.particles.nAlter != schema.nAlter())
       throw InputError(file, name->line,
                        "generator '" + name->text + "' made particles of another model's widths");
@@ -309,7 +312,7 @@ Scenario readScenario(const std::string& path) {
   pb.source = path;
   pb.run.source = path;
   Params top = tableParams(root, path, "the scenario");
-  for (const char* k : {"model", "particles", "decomposition", "output"}) top.accept(k);
+  for (const char* k : {"model", "particles", "decomposition", "output", "strength"}) top.accept(k);
   top.text("description", "");
   if (!top.has("steps")) throw InputError(path, 0, "missing steps = N (the number of time steps)");
   pb.run.steps = top.integer("steps");
@@ -317,10 +320,12 @@ Scenario readScenario(const std::string& path) {
   top.checkAllUsed();
 
   readModel(root, path, sc);
-  Generated g = readParticles(root, path, pb);
+  Generated g = readParticles(root, path, sc);
   pb.particles = std::move(g.particles);
   readDecomposition(root, path, g, pb);
   readOutput(root, path, pb);
+  if (const toml::table* t = subTable(root, "strength", path))
+    sc.strength = tableParams(*t, path, "[strength]");
   return sc;
 }
 

@@ -9,6 +9,7 @@
 //     [decomposition]         procs, min_cell_size, margin, periodic, box_lo, box_hi, dimension
 //     [output]                dir, restart_every, history_every, history_ids, globals_every
 //     [output.paraview], [output.picture]
+//     [strength]              options of the model's strength search (pdq strength)
 //
 // Every value keeps its file and line; a key nobody reads is an error at its line with
 // the nearest known key suggested.
@@ -23,6 +24,13 @@ struct Scenario {
   Problem problem;
   // The model's parameters as written (for `pdq prep`, which writes pdQUserInput.dat).
   Params modelParams{"[model]"};
+  // The generator that made the particles and its [particles] parameters (empty when they
+  // came from files): a strength driver reads the specimen's geometry from them.
+  std::string generator;
+  Params generatorParams{"[particles]"};
+  // The [strength] table: options of `pdq strength` (scenario/strength.hpp), checked by
+  // the model's strength driver; `--set` items override them.
+  Params strength{"[strength]"};
 };
 
 // Reads a TOML scenario: creates and configures the model, builds or reads the particles

@@ -11,7 +11,6 @@
 namespace pdq::mplm {
 namespace {
 
-constexpr double s = 0.02;
 // Thesis §4.4: Δt = s / (24 c0(steel)) = 1.808e-7 s.
 const std::map<std::string, std::string> thesisParams = {{"dt", "1.808e-7"}};
 
@@ -28,49 +27,59 @@ std::vector<std::string> exampleNames() {
           "rc_beam",   "rc_beam_stirrups", "rc_beam_shear", "deep_beam"};
 }
 
-Example plate(const std::string& orientation, bool compression, bool traction) {
-  constexpr double width = 0.14, height = 0.24, t = 0.12;
-  const auto o = prep::hexOrientation(orientation);
+Example plate(const PlateSpec& spec) {
+  const double s = spec.spacing, t = spec.thickness;
+  const auto o = prep::hexOrientation(spec.orientation);
   Example ex;
-  ex.name = std::string(compression ? "compression_" : "tension_") + orientation;
-  ex.title = std::string("2D uniaxial ") + (compression ? "compression" : "tension") +
-             ", bonds along " + (orientation == "x" ? "X" : "Y") + ", load along Y";
+  ex.name = std::string(spec.compression ? "compression_" : "tension_") + spec.orientation;
+  ex.title = std::string("2D uniaxial ") + (spec.compression ? "compression" : "tension") +
+             ", bonds along " + (spec.orientation == "x" ? "X" : "Y") + ", load along Y";
   ex.particles = newParticleSet();
-  addConcrete(ex.particles, prep::hexagonalRectangle(width, height, s, o));
+  addConcrete(ex.particles, prep::hexagonalRectangle(spec.width, spec.height, s, o));
   // Two layers at each end: rows (√3/2 s apart) or zig-zag layers (s/2 apart).
   const double layer = o == prep::HexOrientation::BondsAlongX ? prep::hexPitch(s) : s / 2;
   const double reach = 1.5 * layer;
   const double yMax = maxCoord(ex.particles, 1);
   const auto top = select(ex.particles, [&](const double* f) { return f[1] > yMax - reach; });
   const auto bottom = select(ex.particles, [&](const double* f) { return f[1] < reach; });
-  const double force = 1e6 * width * t * (compression ? -1 : 1);  // 1 MPa on the section
-  if (traction) {
-    loadUniform(ex.particles, top, 0, 0, width, 0, force);
-    loadUniform(ex.particles, bottom, 0, 0, width, 0, -force);
+  const double force = spec.stress * spec.width * t * (spec.compression ? -1 : 1);
+  if (spec.traction) {
+    loadUniform(ex.particles, top, 0, 0, spec.width, 0, force);
+    loadUniform(ex.particles, bottom, 0, 0, spec.width, 0, -force);
   } else {
     load(ex.particles, top, 0, force / top.size());
     load(ex.particles, bottom, 0, -force / bottom.size());
   }
   monitor(ex.particles, top);
-  ex.params = thesisParams;
   ex.params["thickness"] = number(t);
+  ex.params["spacing"] = number(s);
   ex.steps = 10000;
   ex.unit = "MPa";
+  ex.unitLoad = spec.stress / 1e6;
+  ex.aci = spec.compression ? 27.58 : 2.758;  // f'c and f_t of Table 4.1
+  ex.aciMode = spec.compression ? "compression" : "tension";
+  return ex;
+}
+
+Example plate(const std::string& orientation, bool compression, bool traction) {
+  PlateSpec spec;
+  spec.orientation = orientation;
+  spec.compression = compression;
+  spec.traction = traction;
+  Example ex = plate(spec);
+  ex.params.insert(thesisParams.begin(), thesisParams.end());
   if (compression) {
     ex.thesisMplm = orientation == "x" ? 28.48 : 61.06;
     ex.classical = 27.58;
-    ex.aci = 27.58;
-    ex.aciMode = "compression";
   } else {
     ex.thesisMplm = orientation == "x" ? 2.784 : 3.226;
     ex.classical = 2.758;
-    ex.aci = 2.758;
-    ex.aciMode = "tension";
   }
   return ex;
 }
 
 Example beam(const BeamSpec& b) {
+  const double s = b.spacing;
   Example ex;
   ex.particles = newParticleSet();
   ParticleSet& ps = ex.particles;
@@ -91,24 +100,29 @@ Example beam(const BeamSpec& b) {
     });
   };
   if (concreteAt(0, 0).size() != 1 || concreteAt(b.span, 0).size() != 1)
-    throw std::logic_error("beam: no lattice particle at a bottom corner");
-  const auto left = select(ps, [&](const double* f) {
-    return isConcrete(f) && f[1] < tol && f[0] <= b.supportWidth + tol;
-  });
-  const auto right = select(ps, [&](const double* f) {
-    return isConcrete(f) && f[1] < tol && f[0] >= b.span - b.supportWidth - tol;
-  });
-  constrain(ps, left, FIX_X | FIX_Y);
-  constrain(ps, right, FIX_Y);
+    throw std::invalid_argument("the span " + number(b.span) +
+                                " is not a whole number of spacings: no lattice particle at the "
+                                "bottom-right corner to support");
+  if (b.supports) {
+    const auto left = select(ps, [&](const double* f) {
+      return isConcrete(f) && f[1] < tol && f[0] <= b.supportWidth + tol;
+    });
+    const auto right = select(ps, [&](const double* f) {
+      return isConcrete(f) && f[1] < tol && f[0] >= b.span - b.supportWidth - tol;
+    });
+    constrain(ps, left, FIX_X | FIX_Y);
+    constrain(ps, right, FIX_Y);
+  }
   const auto top = select(ps, [&](const double* f) { return isConcrete(f) && f[1] > yTop - tol; });
-  loadUniform(ps, top, 0, 0, b.span, 0, -1e3 * b.span);  // 1 kN/m over the span
+  if (b.lineLoad != 0) loadUniform(ps, top, 0, 0, b.span, 0, -b.lineLoad * b.span);
   const auto mid = select(ps, [&](const double* f) {
     return isConcrete(f) && f[1] < tol && std::fabs(f[0] - b.span / 2) <= s / 2 + tol;
   });
   monitor(ps, mid);
-  ex.params = thesisParams;
   ex.params["thickness"] = number(b.thickness);
+  ex.params["spacing"] = number(s);
   ex.unit = "kN/m";
+  ex.unitLoad = b.lineLoad / 1e3;
   ex.beam = true;
   ex.span = b.span;
   if (b.barDiameter > 0) {
@@ -189,6 +203,7 @@ Example example(const std::string& name) {
     throw std::invalid_argument("unknown MPLM example '" + name + "'");
   }
   ex.name = name;
+  ex.params.insert(thesisParams.begin(), thesisParams.end());
   return ex;
 }
 

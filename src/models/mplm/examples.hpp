@@ -2,6 +2,8 @@
 // The thesis's 2D examples (§4.4.1–4.4.6) as particle sets and parameters for mplm2d.
 // Each is built for a unit load (load_scale = 1 means 1 MPa of stress for the plates,
 // 1 kN/m of line load for the beams), so a strength search varies load_scale only.
+// The scenario generators "mplm_plate" and "mplm_beam" (generators.cpp) build the same
+// specimens from a scenario's [particles] table.
 #include <map>
 #include <string>
 #include <vector>
@@ -16,6 +18,7 @@ struct Example {
   std::map<std::string, std::string> params;  // mplm2d parameters
   long steps = 0;
   std::string unit;       // "MPa" or "kN/m"
+  double unitLoad = 1;    // the load, in `unit`, at load_scale = 1
   bool beam = false;      // simply supported beam (else a plate in tension or compression)
   double span = 0;        // beams: distance between supports (m)
   double thesisMplm = 0;  // the thesis's MPLM strength, in `unit`
@@ -30,13 +33,21 @@ std::vector<std::string> exampleNames();
 Example example(const std::string& name);
 
 // §4.4.1/4.4.2: the 14 × 24 × 12 cm plate loaded along Y on its two end layers each side.
-// `orientation` "x" (bonds along X: the load is across the bonds, Fig. 4.6a) or "y".
-// As in the thesis, every loaded particle carries the same force; `traction` instead
-// shares the force by tributary width, as the nodal loads of a uniform traction.
+struct PlateSpec {
+  double width = 0.14, height = 0.24, thickness = 0.12, spacing = 0.02;
+  // "x" (bonds along X: the load is across the bonds, Fig. 4.6a) or "y".
+  std::string orientation = "x";
+  bool compression = false;
+  double stress = 1e6;  // peak stress on the section at load_scale 1 (Pa)
+  // As in the thesis, every loaded particle carries the same force; `traction` instead
+  // shares the force by tributary width, as the nodal loads of a uniform traction.
+  bool traction = false;
+};
+Example plate(const PlateSpec& spec);
 Example plate(const std::string& orientation, bool compression, bool traction = false);
 
 struct BeamSpec {
-  double span = 1.16, depth = 0.26, thickness = 0.12;
+  double span = 1.16, depth = 0.26, thickness = 0.12, spacing = 0.02;
   double barDiameter = 0, barCentroid = 0.02;  // 0: plain concrete
   double stirrupDiameter = 0, stirrupFirst = 0.04, stirrupSpacing = 0.15;
   double stirrupCover = 0.02;  // stirrups run from the bar's centroid to depth − cover
@@ -44,6 +55,8 @@ struct BeamSpec {
   // particle alone). A single particle carrying the whole reaction (8.7 kN at the plain
   // beam's cracking load) is damaged long before the beam fails.
   double supportWidth = 0.04;
+  bool supports = true;   // false: no supports (the scenario sets its own)
+  double lineLoad = 1e3;  // peak uniform load on the top layer at load_scale 1 (N/m); 0: none
 };
 // §4.4.3–4.4.6: simply supported (pinned at the bottom-left end, roller at the right), every
 // top-layer particle loaded downward (uniform line load), monitor at bottom midspan.

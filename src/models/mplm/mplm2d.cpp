@@ -10,6 +10,7 @@
 #include <iomanip>
 #include <limits>
 #include <numbers>
+#include <sstream>
 
 #include "engine/error.hpp"
 #include "engine/model.hpp"
@@ -29,13 +30,16 @@ class Mplm2d final : public Model {
 
   // Interactions in the reference configuration: concrete–concrete within δ; steel–steel
   // of the same bar within s; a linking steel particle with concrete within s (not at
-  // distance zero).
+  // distance zero). Concrete neighbours must sit at the model's spacing: masses and
+  // stiffnesses are those of a lattice at s.
   void setup(Context& ctx) override {
     if (ctx.dim() != 2) throw InputError("mplm2d", 0, "mplm2d needs a 2D problem (all Z equal)");
     Particles& P = ctx.particles;
     for (std::size_t i = 0; i < P.owned(); ++i)
       ctx.forEachNearby(i, [&](std::size_t j) {
-        if (j != i && interacts(P.fixed(i), P.fixed(j))) ctx.bonds.add(i, P.gid(j));
+        if (j == i || !interacts(P.fixed(i), P.fixed(j))) return;
+        checkSpacing(P, i, j);
+        ctx.bonds.add(i, P.gid(j));
       });
     if (par_.dt > 0) ctx.setDt(par_.dt);
   }
@@ -223,6 +227,19 @@ class Mplm2d final : public Model {
   double massOf(const double* f) const {
     return isSteel(f) ? par_.steelMass(f[AREA]) : par_.concreteMass();
   }
+  void checkSpacing(const Particles& P, std::size_t i, std::size_t j) const {
+    const double *fi = P.fixed(i), *fj = P.fixed(j);
+    if (isSteel(fi) || isSteel(fj)) return;
+    const double d = std::hypot(fj[FX_X] - fi[FX_X], fj[FX_Y] - fi[FX_Y]);
+    if (std::fabs(d - par_.s) > 1e-3 * par_.s) {
+      std::ostringstream why;
+      why << "concrete particles " << P.gid(i) << " and " << P.gid(j) << " are " << d
+          << " apart, but the model's lattice spacing is " << par_.s
+          << ": set [model] spacing to the particles' spacing";
+      throw InputError("mplm2d", 0, why.str());
+    }
+  }
+
   bool interacts(const double* fi, const double* fj) const {
     const double dx = fj[FX_X] - fi[FX_X], dy = fj[FX_Y] - fi[FX_Y];
     const double d = std::sqrt(dx * dx + dy * dy);

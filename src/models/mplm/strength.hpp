@@ -4,8 +4,11 @@
 // rampFraction of the run and then held, with extra damping in the hold so that a structure
 // that can stand comes to rest; equilibrium holds when, in the second half of the hold,
 // hardly any more interactions break and the monitored displacement changes by at most
-// `settle`. Bisection
-// over the peak brackets the strength.
+// `settle`. Bisection over the peak brackets the strength; with `atOnce` > 1 each round
+// tries that many loads side by side on groups of ranks (the loads tried depend on atOnce
+// only, never on the number of ranks, so results are the same on any number of ranks).
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,10 +35,17 @@ struct StrengthOptions {
   // Interactions that may still break in the second half of the hold, as a fraction of
   // all broken ones (plus one): isolated late breaks do not make a structure fail.
   double lateBreaks = 0.05;
-  std::map<std::string, std::string> overrides;  // extra model parameters
+  // Trials simulate this multiple of the example's time (ramp and hold alike): for a
+  // structure whose fundamental period is not short against the example's ramp.
+  double timeScale = 1;
+  int atOnce = 1;      // loads tried per round, side by side on groups of ranks
+  std::string outDir;  // if set: each trial's history.csv and final restart in outDir/trial_NN
+  std::map<std::string, std::string> overrides;      // extra model parameters
+  std::function<void(const struct Trial&)> onTrial;  // called on every rank as trials end
 };
 
 struct Trial {
+  int index = 0;  // 1, 2, ... in the order the search asked for them
   double load = 0;
   bool holds = false;
   double uHold = 0, uMid = 0, uEnd = 0;  // monitored displacement: hold start, mid, end
@@ -44,19 +54,22 @@ struct Trial {
   long steps = 0;                        // steps run (fewer when stopped as runaway)
   std::string mode;                      // failure mode judged from the damage
   std::string log;                       // the run's start-up log (time step, ...)
+  std::string dir;                       // its outputs (StrengthOptions::outDir)
 };
 
 struct Strength {
-  double lower = 0, upper = 0;  // holds at `lower`, fails at `upper`
-  std::string mode;             // judged at the lowest failing trial
+  double lower = -1, upper = -1;  // holds at `lower`, fails at `upper` (-1: none found)
+  std::string mode;               // judged at the lowest failing trial
   std::vector<Trial> trials;
 };
 
-// One trial at peak load `load` (in the example's unit).
-Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions& opt = {});
+// One trial at peak load `load` (in the example's unit); `index` names its output folder.
+Trial runTrial(const Example& ex, double load, Comm& comm, const StrengthOptions& opt = {},
+               int index = 1);
 
 // Bisection between a load that holds (lo) and one that fails (hi); the bracket is first
-// widened (lo halved, hi doubled) until it is one.
+// widened (lo halved, hi doubled) until it is one. Each round tries opt.atOnce loads
+// (evenly spaced inside the bracket).
 Strength findStrength(const Example& ex, double lo, double hi, Comm& comm,
                       const StrengthOptions& opt = {});
 
