@@ -42,6 +42,7 @@ struct PlotCommandOptions {
   std::string x;                    // column for the horizontal axis (default: the first)
   std::vector<std::string> y;       // columns to plot (default: all others)
   std::string out, title, xLabel, yLabel;
+  double xScale = 1, yScale = 1;  // factors applied to the values (units, sign)
 };
 void plotCommand(const PlotCommandOptions& o);
 

@@ -135,6 +135,9 @@ int main(int argc, char** argv) {
   plotCmd->add_option("--title", plot.title, "plot title");
   plotCmd->add_option("--xlabel", plot.xLabel, "horizontal axis label");
   plotCmd->add_option("--ylabel", plot.yLabel, "vertical axis label");
+  plotCmd->add_option("--x-scale", plot.xScale,
+                      "multiply the horizontal values (e.g. -1000: m downward to mm)");
+  plotCmd->add_option("--y-scale", plot.yScale, "multiply the vertical values");
 
   StrengthCommandOptions strength;
   CLI::App* strengthCmd = app.add_subcommand(

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <regex>
 
 #include "cli/commands.hpp"
@@ -50,6 +51,8 @@ void pictureCommand(const PictureCommandOptions& o) {
   Scenario sc = loadScenario(o.input);
   Problem& pb = sc.problem;
   const std::string restart = o.restart.empty() ? latestRestart(pb.run.outDir, o.input) : o.restart;
+  // Any step may be drawn, also from a run longer than the scenario's (a strength trial).
+  pb.run.steps = std::numeric_limits<long>::max();
   BondState bonds = readRestart(restart, pb);
   // The picture options: the scenario's [output.picture] table, then --set items.
   Params table = pb.output.picture ? *pb.output.picture : Params("picture options");
@@ -94,7 +97,8 @@ void plotCommand(const PlotCommandOptions& o) {
   for (const auto& t : tables) {
     const std::string x = o.x.empty() ? t.names.at(0) : o.x;
     xName = x;
-    const auto& xs = t.column(x);
+    std::vector<double> xs = t.column(x);
+    for (double& v : xs) v *= o.xScale;
     std::vector<std::string> ys = o.y;
     if (ys.empty())
       for (const auto& n : t.names)
@@ -102,7 +106,9 @@ void plotCommand(const PlotCommandOptions& o) {
     for (const auto& y : ys) {
       const std::string label =
           tables.size() > 1 ? fs::path(t.source).filename().string() + ": " + y : y;
-      series.push_back({label, xs, t.column(y)});
+      std::vector<double> values = t.column(y);
+      for (double& v : values) v *= o.yScale;
+      series.push_back({label, xs, values});
     }
   }
   post::PlotStyle style;

@@ -79,6 +79,7 @@ void mplmStrength(Scenario& sc, const Params& o, Comm& comm) {
   const double reference = o.number("reference", 0.0);
   if (!(hi > lo))
     throw InputError(pb.source, o.raw("hi") ? o.raw("hi")->line : 0, "hi must exceed lo");
+  o.checkAllUsed();  // before hours of trials
   if (comm.root()) {
     fs::create_directories(dir);
     std::printf("%s", fmt::format("pdq strength: {}, {} particles, {} steps{}; {} load{} per "

@@ -1,0 +1,87 @@
+// pdq strength through the executable on a thesis plate (examples/mplm/tension_x.toml):
+// the report, the files it writes, a picture of a trial's damage by pdq post, the same
+// trials on 1, 2 and 3 ranks, and bad options refused with their name.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "pdq_process.hpp"
+
+namespace fs = std::filesystem;
+using namespace pdq::test;
+using ::testing::HasSubstr;
+
+namespace {
+
+std::string plate() { return sourceDir() + "/examples/mplm/tension_x.toml"; }
+
+int lines(const std::string& text) {
+  return static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+}
+
+TEST(CliStrength, FindsTheTensionPlateStrengthAndWritesItsTrials) {
+  const std::string dir = freshDir("strength_plate");
+  auto r = runPdq({"strength", plate(), "--set", "max_trials=6"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.out, HasSubstr("failure mode: tension"));
+  EXPECT_THAT(r.out, HasSubstr("classical: 2.758 MPa"));
+  EXPECT_THAT(r.out, HasSubstr("reference: 2.784 MPa"));
+  const std::string out = dir + "/tension_x_out/strength";
+  const std::string csv = readFile(out + "/trials.csv");
+  EXPECT_EQ(lines(csv), 7);  // header + 6 trials
+  // The bracket printed is a holding and a failing trial of the table, f_t within 5 %.
+  double lo = 0, hi = 0;
+  ASSERT_EQ(std::sscanf(r.out.substr(r.out.find("\nstrength: ")).c_str(), "\nstrength: %lf to %lf",
+                        &lo, &hi),
+            2)
+      << r.out;
+  EXPECT_LT(lo, hi);
+  EXPECT_NEAR(0.5 * (lo + hi), 2.758, 0.05 * 2.758 + (hi - lo));
+  EXPECT_THAT(readFile(out + "/strength.txt"), HasSubstr("failure mode: tension"));
+  // Every trial's load-displacement history and final state; a failing one drawn by post.
+  for (int k = 1; k <= 6; ++k) {
+    const std::string t = out + "/trial_0" + std::to_string(k);
+    EXPECT_TRUE(fs::exists(t + "/history.csv")) << t;
+  }
+  std::string restart;
+  for (const auto& f : filesUnder(out + "/trial_02"))
+    if (f.rfind("ParticleAlterAttrs.", 0) == 0) restart = out + "/trial_02/" + f;
+  ASSERT_FALSE(restart.empty());
+  r = runPdq({"post", "picture", plate(), "--restart", restart, "-o", "failed.png"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_EQ(readFile(dir + "/failed.png").substr(1, 3), "PNG");
+  r = runPdq({"post", "plot", out + "/trial_01/history.csv", "--x", "uy", "--y", "load_factor",
+              "--x-scale", "1000", "-o", "curve.png"},
+             dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_EQ(readFile(dir + "/curve.png").substr(1, 3), "PNG");
+}
+
+TEST(CliStrength, SameTrialsOnAnyNumberOfRanks) {
+  std::string first;
+  for (int ranks : {1, 2, 3}) {
+    SCOPED_TRACE(ranks);
+    const std::string dir = freshDir("strength_ranks_" + std::to_string(ranks));
+    const auto r = runPdq({"strength", plate(), "--set", "max_trials=4"}, dir, ranks);
+    ASSERT_EQ(r.code, 0) << r.all();
+    const std::string csv = readFile(dir + "/tension_x_out/strength/trials.csv");
+    if (first.empty())
+      first = csv;
+    else
+      EXPECT_EQ(csv, first);  // loads, displacements, broken counts: bit for bit
+  }
+}
+
+TEST(CliStrength, BadOptionsAreRefusedByName) {
+  const std::string dir = freshDir("strength_bad");
+  auto r = runPdq({"strength", plate(), "--set", "at_onse=2"}, dir);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("did you mean 'at_once'"));
+  r = runPdq({"strength", plate(), "--set", "lo=5", "--set", "hi=2"}, dir);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("hi must exceed lo"));
+  EXPECT_FALSE(fs::exists(dir + "/tension_x_out"));
+}
+
+}  // namespace
