@@ -6,7 +6,7 @@ JOBS ?= $(shell nproc)
 PDQ = $(BUILD)/pdq
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps deps-test build run test bench validate format clean
+.PHONY: all deps deps-test build run test bench validate pictures format clean
 
 all: build
 
@@ -31,6 +31,9 @@ bench: deps-test build
 
 validate: build
 	bash bench/mplm/validate.sh $(BUILD)
+
+pictures: build
+	bash docs/pictures.sh $(BUILD)
 
 format:
 	clang-format -i $$(git ls-files '*.cpp' '*.hpp')

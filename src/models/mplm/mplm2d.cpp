@@ -328,12 +328,17 @@ class Mplm2d final : public Model {
       if (std::fabs(th) <= 0.1) {
         // Particles turn little in most runs: Taylor series, exact to round-off here
         // (next terms below 1e-22 relative) and several times cheaper than sin and cos.
+        // Coefficients 1/n! as constants: multiplications only.
         const double t2 = th * th;
         cs_[2 * i] =
-            1 -
-            t2 / 2 * (1 - t2 / 12 * (1 - t2 / 30 * (1 - t2 / 56 * (1 - t2 / 90 * (1 - t2 / 132)))));
+            1 - t2 * (1.0 / 2 -
+                      t2 * (1.0 / 24 -
+                            t2 * (1.0 / 720 - t2 * (1.0 / 40320 - t2 * (1.0 / 3628800 -
+                                                                        t2 * (1.0 / 479001600))))));
         cs_[2 * i + 1] =
-            th * (1 - t2 / 6 * (1 - t2 / 20 * (1 - t2 / 42 * (1 - t2 / 72 * (1 - t2 / 110)))));
+            th * (1 - t2 * (1.0 / 6 -
+                            t2 * (1.0 / 120 - t2 * (1.0 / 5040 -
+                                                    t2 * (1.0 / 362880 - t2 * (1.0 / 39916800))))));
       } else {
         cs_[2 * i] = std::cos(th);
         cs_[2 * i + 1] = std::sin(th);

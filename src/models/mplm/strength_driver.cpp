@@ -56,6 +56,11 @@ StrengthOptions readOptions(const Params& o, const std::string& outDir) {
   return opt;
 }
 
+std::string trialHeader(const Example& ex) {
+  return fmt::format("  {:>5}  {:>12}  {:<6}  {:>14}  {:>7}  {}\n", "trial",
+                     "load (" + ex.unit + ")", "result", "end |u| (mm)", "broken", "damage");
+}
+
 std::string trialLine(const Trial& t, const Example& ex) {
   return fmt::format("  {:>5}  {:>12.6g}  {:<6}  {:>14.4g}  {:>7}  {}\n", t.index, t.load,
                      t.holds ? "holds" : "fails", 1e3 * t.uEnd, t.brokenEnd,
@@ -83,12 +88,12 @@ void mplmStrength(Scenario& sc, const Params& o, Comm& comm) {
   if (comm.root()) {
     fs::create_directories(dir);
     std::printf("%s", fmt::format("pdq strength: {}, {} particles, {} steps{}; {} load{} per "
-                                  "round\n  trial  load ({})  result  end |u| (mm)  broken  "
-                                  "damage\n",
+                                  "round\n",
                                   pb.source, ex.particles.size(), ex.steps,
                                   opt.timeScale != 1 ? fmt::format(" x {}", opt.timeScale) : "",
-                                  opt.atOnce, opt.atOnce > 1 ? "s" : "", ex.unit)
+                                  opt.atOnce, opt.atOnce > 1 ? "s" : "")
                           .c_str());
+    std::printf("%s", trialHeader(ex).c_str());
     std::fflush(stdout);
   }
   opt.onTrial = [&](const Trial& t) {
@@ -105,6 +110,12 @@ void mplmStrength(Scenario& sc, const Params& o, Comm& comm) {
         fmt::format("strength: {:.4g} to {:.4g} {} (holds at the first, fails at the second)\n",
                     st.lower, st.upper, ex.unit);
     report += "failure mode: " + st.mode + "\n";
+    for (const Trial& t : st.trials)
+      if (t.load == st.upper)
+        report += fmt::format(
+            "failing trial: {} (draw it: pdq post picture {} --restart "
+            "{}/ParticleAlterAttrs.{}.rst)\n",
+            t.dir, pb.source, t.dir, t.steps);
   } else if (st.upper < 0) {
     report += fmt::format("no failure found up to {:.4g} {}: raise hi or max_trials\n",
                           st.trials.empty() ? hi : st.trials.back().load, ex.unit);
@@ -123,7 +134,7 @@ void mplmStrength(Scenario& sc, const Params& o, Comm& comm) {
   }
   report += "outputs: " + dir + "/ (strength.txt, trials.csv, trial_NN/)\n";
   std::string trials = fmt::format("# pdq strength: {} (model mplm2d)\n", pb.source);
-  trials += "  trial  load (" + ex.unit + ")  result  end |u| (mm)  broken  damage\n";
+  trials += trialHeader(ex);
   for (const Trial& t : st.trials) trials += trialLine(t, ex);
   std::string csv = "trial,load,holds,u_hold,u_mid,u_end,broken_mid,broken_end,steps,mode\n";
   for (const Trial& t : st.trials)
