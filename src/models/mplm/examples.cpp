@@ -43,10 +43,10 @@ Example plate(const PlateSpec& spec) {
   const auto top = select(ex.particles, [&](const double* f) { return f[1] > yMax - reach; });
   const auto bottom = select(ex.particles, [&](const double* f) { return f[1] < reach; });
   const double force = spec.stress * spec.width * t * (spec.compression ? -1 : 1);
-  if (spec.traction) {
+  if (spec.loaded && spec.traction) {
     loadUniform(ex.particles, top, 0, 0, spec.width, 0, force);
     loadUniform(ex.particles, bottom, 0, 0, spec.width, 0, -force);
-  } else {
+  } else if (spec.loaded) {
     load(ex.particles, top, 0, force / top.size());
     load(ex.particles, bottom, 0, -force / bottom.size());
   }
@@ -56,8 +56,10 @@ Example plate(const PlateSpec& spec) {
   ex.steps = 10000;
   ex.unit = "MPa";
   ex.unitLoad = spec.stress / 1e6;
-  ex.aci = spec.compression ? 27.58 : 2.758;  // f'c and f_t of Table 4.1
-  ex.aciMode = spec.compression ? "compression" : "tension";
+  if (spec.loaded) {
+    ex.aci = spec.compression ? 27.58 : 2.758;  // f'c and f_t of Table 4.1
+    ex.aciMode = spec.compression ? "compression" : "tension";
+  }
   return ex;
 }
 

@@ -60,7 +60,9 @@ PlateSpec plateSpec(const Params& p, const Params& model) {
   s.width = p.number("width", s.width, 0.0, big);
   s.height = p.number("height", s.height, 0.0, big);
   s.orientation = p.choice("orientation", s.orientation, {"x", "y"});
-  s.compression = p.choice("loading", "tension", {"tension", "compression"}) == "compression";
+  const std::string loading = p.choice("loading", "tension", {"tension", "compression", "none"});
+  s.compression = loading == "compression";
+  s.loaded = loading != "none";
   s.stress = p.number("stress", s.stress, 1e-300, big);
   s.traction = p.flag("traction", s.traction);
   return s;
