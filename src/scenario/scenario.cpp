@@ -324,8 +324,11 @@ Scenario readScenario(const std::string& path) {
   pb.particles = std::move(g.particles);
   readDecomposition(root, path, g, pb);
   readOutput(root, path, pb);
-  if (const toml::table* t = subTable(root, "strength", path))
-    sc.strength = tableParams(*t, path, "[strength]");
+  if (const toml::table* t = subTable(root, "strength", path)) {
+    sc.strength = tableParams(*t, path, "[strength]", {"model"});
+    if (const toml::table* m = subTable(*t, "model", path))
+      sc.strengthModel = tableParams(*m, path, "[strength.model]");
+  }
   return sc;
 }
 

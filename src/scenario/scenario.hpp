@@ -31,6 +31,9 @@ struct Scenario {
   // The [strength] table: options of `pdq strength` (scenario/strength.hpp), checked by
   // the model's strength driver; `--set` items override them.
   Params strength{"[strength]"};
+  // [strength.model]: model parameters for the search's trials only (e.g. a larger time
+  // step by rotary-inertia scaling, which leaves statics unchanged).
+  Params strengthModel{"[strength.model]"};
 };
 
 // Reads a TOML scenario: creates and configures the model, builds or reads the particles

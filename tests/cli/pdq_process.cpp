@@ -53,7 +53,11 @@ Run runPdq(const std::vector<std::string>& args, const std::string& cwd, int ran
   if (!cwd.empty()) cmd += "cd " + quote(cwd) + " && ";
   cmd += "exec ";
   if (ranks > 0)
-    cmd += quote(PDQ_MPIEXEC) + " --oversubscribe --allow-run-as-root -np " +
+    // Oversubscribed ranks yield while they wait, as in tests/CMakeLists.txt: busy-polling
+    // ranks on a loaded machine would otherwise starve the ones with work to do.
+    cmd += quote(PDQ_MPIEXEC) +
+           " --oversubscribe --allow-run-as-root --mca mpi_yield_when_idle 1 "
+           "-x OMP_WAIT_POLICY=PASSIVE -np " +
            std::to_string(ranks) + " ";
   cmd += quote(exe ? exe : PDQ_EXE_DEFAULT);
   for (const auto& a : args) cmd += " " + quote(a);

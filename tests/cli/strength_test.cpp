@@ -82,6 +82,16 @@ TEST(CliStrength, BadOptionsAreRefusedByName) {
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("hi must exceed lo"));
   EXPECT_FALSE(fs::exists(dir + "/tension_x_out"));
+  // A model parameter for the trials only, misspelt: named at its line before any trial.
+  std::string text = readFile(plate());
+  text += "\n[strength.model]\nsteel_rotary_inertia_scal = 10\n";
+  writeFile(dir + "/typo.toml", text);
+  const int line = lines(text);
+  r = runPdq({"strength", "typo.toml"}, dir);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("typo.toml:" + std::to_string(line)));
+  EXPECT_THAT(r.err, HasSubstr("did you mean 'steel_rotary_inertia_scale'"));
+  EXPECT_FALSE(fs::exists(dir + "/typo_out"));
 }
 
 }  // namespace

@@ -38,7 +38,7 @@ struct PlateSpec {
   // "x" (bonds along X: the load is across the bonds, Fig. 4.6a) or "y".
   std::string orientation = "x";
   bool compression = false;
-  bool loaded = true;  // false: no loads (the scenario sets its own)
+  bool loaded = true;   // false: no loads (the scenario sets its own)
   double stress = 1e6;  // peak stress on the section at load_scale 1 (Pa)
   // As in the thesis, every loaded particle carries the same force; `traction` instead
   // shares the force by tributary width, as the nodal loads of a uniform traction.

@@ -52,7 +52,7 @@ class Mplm2d final : public Model {
     in_.constraint.resize(n);
     for (std::size_t i = 0; i < n; ++i) {
       in_.mass[i] = massOf(P.fixed(i));
-      in_.inertia[i] = Parameters::rotationalInertia(in_.mass[i], par_.s);
+      in_.inertia[i] = inertiaOf(P.fixed(i));
       in_.constraint[i] = static_cast<int>(P.fixed(i)[CONSTRAINT]);
     }
     inter_.resize(ctx.bonds.count());
@@ -227,6 +227,10 @@ class Mplm2d final : public Model {
   double massOf(const double* f) const {
     return isSteel(f) ? par_.steelMass(f[AREA]) : par_.concreteMass();
   }
+  double inertiaOf(const double* f) const {
+    return Parameters::rotationalInertia(massOf(f), par_.s) *
+           (isSteel(f) ? par_.steelRotaryScale : 1.0);
+  }
   void checkSpacing(const Particles& P, std::size_t i, std::size_t j) const {
     const double *fi = P.fixed(i), *fj = P.fixed(j);
     if (isSteel(fi) || isSteel(fj)) return;
@@ -286,7 +290,8 @@ class Mplm2d final : public Model {
     // harmonic mean mass (the particle mass for like particles); likewise for rotation.
     const double mi = massOf(fi), mj = massOf(fj);
     const double m = 2 * mi * mj / (mi + mj);
-    const double I = Parameters::rotationalInertia(m, s);
+    const double Ii = inertiaOf(fi), Ij = inertiaOf(fj);
+    const double I = 2 * Ii * Ij / (Ii + Ij);
     k.c = 2 * par_.zeta * std::sqrt(k.ka * m);
     k.cr = 2 * par_.zetaRotation * std::sqrt(4 * k.kb * I);
     return k;

@@ -50,6 +50,7 @@ void Parameters::read(const Params& p) {
   steelE = p.number("steel_modulus", steelE, 1e-12, big);
   steelRho = p.number("steel_density", steelRho, 1e-12, big);
   steelYield = p.number("steel_yield_strain", steelYield, 1e-300, big);
+  steelRotaryScale = p.number("steel_rotary_inertia_scale", steelRotaryScale, 1e-6, 1e12);
   link = p.choice("link_stiffness", link, {"concrete", "length"});
 
   zeta = p.number("damping_ratio", zeta, 0.0, 10.0);

@@ -12,6 +12,7 @@
 
 #include "engine/atomic_file.hpp"
 #include "engine/error.hpp"
+#include "engine/model.hpp"
 #include "models/mplm/generators.hpp"
 #include "models/mplm/strength.hpp"
 #include "scenario/strength.hpp"
@@ -37,6 +38,15 @@ Example fromScenario(const Scenario& sc) {
   ex.params.clear();
   for (const auto& k : sc.modelParams.keys()) ex.params[k] = sc.modelParams.raw(k)->text;
   ex.steps = pb.run.steps;
+  // [strength.model] overrides, checked here so that a wrong key is named at its line.
+  Params check = sc.modelParams;
+  for (const auto& k : sc.strengthModel.keys()) {
+    const auto v = sc.strengthModel.raw(k);
+    ex.params[k] = v->text;
+    check.set(k, v->text, v->file, v->line);
+  }
+  ModelRegistry::create("mplm2d")->configure(check);
+  check.checkAllUsed();
   return ex;
 }
 
