@@ -25,7 +25,7 @@ cp "$src"/examples/spring/* . 2>/dev/null || true
   -o "$img/lj_melt.png" --set colour_by=potential_energy --set view=1,0.6,0.4 --set width=900 \
   --set "title=LJ melt, 4000 atoms at step 1000, coloured by potential energy"
 "$pdq" post plot melt_out/history.csv -x step -y potential -y kinetic -y total \
-  -o "$img/lj_melt_energy.png" --title "LJ melt: energies per atom" --ylabel "energy per atom"
+  -o "$img/lj_melt_energy.png" --title "LJ melt: energies" --ylabel "energy (reduced units)"
 
 # The RC beam of thesis §4.4.4 at the file's load (examples/mplm/rc_beam.toml).
 "${mpi[@]}" "$pdq" run "$src/examples/mplm/rc_beam.toml" --quiet --out rc_beam_out
@@ -45,6 +45,7 @@ cmake --build plugin -j2 >/dev/null
 "$work/prefix/bin/pdq" post picture "$src/examples/plugin/cluster.toml" --plugin plugin/libmorse.so \
   --restart cluster_out/ParticleAlterAttrs.2000.rst -o "$img/plugin_cluster.png" \
   --set colour_by=vx --set view=1,0.7,0.5 --set width=700 --set "title=Morse cluster (plugin), step 2000"
-"$pdq" post plot cluster_out/history.csv -x step -o "$img/plugin_cluster_history.png" \
+"$pdq" post plot cluster_out/history.csv -x step -y kinetic -y potential \
+  -o "$img/plugin_cluster_history.png" --ylabel "energy" \
   --title "Morse cluster (plugin)"
 echo "pictures in $img"

@@ -5,17 +5,20 @@
 # classical value, pdq's bracket, pdq / thesis and the failure mode. The lowest failing
 # trial of each is drawn by `pdq post picture` into docs/mplm/<example>.png: the damage at
 # failure. Reports and logs stay in the work folder printed at the end.
-# Usage: bench/mplm/validate.sh [build-dir] [ranks]      (about 25 minutes on 2 cores)
+# Usage: bench/mplm/validate.sh [build-dir] [ranks] [examples...]   (~25 minutes on 2 cores)
 set -euo pipefail
 build=$(cd "${1:-build}" && pwd)
 ranks=${2:-2}
+examples=("${@:3}")
+[ ${#examples[@]} -gt 0 ] || examples=(tension_x tension_y compression_x compression_y plain_beam
+  rc_beam rc_beam_stirrups rc_beam_shear deep_beam)
 src=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
+mkdir -p "$src/docs/mplm"
 cd "$work"
 echo "| example | thesis MPLM | ACI 318 / classical | pdq | pdq / thesis | failure mode |"
 echo "| --- | --- | --- | --- | --- | --- |"
-for e in tension_x tension_y compression_x compression_y plain_beam rc_beam rc_beam_stirrups \
-  rc_beam_shear deep_beam; do
+for e in "${examples[@]}"; do
   sc=$src/examples/mplm/$e.toml
   OMP_NUM_THREADS=1 mpirun --oversubscribe --allow-run-as-root -np "$ranks" "$build/pdq" \
     strength "$sc" >"$e.log" 2>&1 || { echo "| $e | pdq strength failed: see $work/$e.log |"; continue; }
@@ -31,7 +34,8 @@ for e in tension_x tension_y compression_x compression_y plain_beam rc_beam rc_b
   if [ -n "$restart" ]; then
     load=$(field strength | sed -E 's/^[^ ]+ to ([^ ]+ [^ ]+) .*/\1/')
     "$build/pdq" post picture "$sc" --restart "$restart" -o "$src/docs/mplm/$e.png" \
-      --set "title=$e: damage in the lowest failing trial, $load" >>"$e.log" 2>&1
+      --set "title=$e: damage in the lowest failing trial, $load" >>"$e.log" 2>&1 ||
+      echo "(picture of $e failed: see $work/$e.log)"
   fi
 done
 echo

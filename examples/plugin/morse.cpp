@@ -59,6 +59,9 @@ class Morse final : public pdq::Model {
     }
   }
 
+  // Forces (and energies) before the first step, so that step 0's history has them.
+  void prepare(pdq::Context& ctx) override { force(ctx); }
+
   void integrate(pdq::Context& ctx) override {
     pdq::Particles& P = ctx.particles;
     const double h = ctx.dt();
@@ -81,7 +84,7 @@ class Morse final : public pdq::Model {
       const double* x = P.alter(i);
       return 0.5 * mass_ * (x[VX] * x[VX] + x[VY] * x[VY] + x[VZ] * x[VZ]);
     });
-    // The energies of the last force evaluation (step 0: none yet).
+    // The energies of the last force evaluation (prepare() made one for step 0).
     const double pe = ctx.sumOwned([&](std::size_t i) { return P.integ(i)[ENERGY]; });
     return {ke, pe};
   }
