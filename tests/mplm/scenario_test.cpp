@@ -13,6 +13,7 @@
 
 #include "engine/error.hpp"
 #include "engine/simulation.hpp"
+#include "models/mplm/attributes.hpp"
 #include "models/mplm/examples.hpp"
 #include "models/mplm/parameters.hpp"
 
@@ -126,6 +127,65 @@ y = [0.19, 0.2]
   const double expected = E * (u / top) * 10 * s * t;
   EXPECT_NEAR(global(sim, "reaction_y") / expected, 1.0, 0.01);
   EXPECT_LT(global(sim, "kinetic"), 1e-12);
+}
+
+// A plate resting on a bearing (constraint 8 = REST_Y on its bottom row, X held at one
+// corner): pushed down by a load on its top row it sits on the bearing, which carries the
+// whole load; pulled up by the same load it lifts off and the bearing carries nothing.
+TEST(MplmScenarios, BearingsPushButNeverPull) {
+  const std::string dir = "mplm_bearing";
+  std::filesystem::create_directories(dir);
+  for (double load : {-100.0, 100.0}) {
+    SCOPED_TRACE(load);
+    const std::string path = dir + "/rest.toml";
+    std::ofstream(path) << R"(steps = 6000
+[model]
+name = "mplm2d"
+damage = false
+viscous_damping = 20000
+ramp_fraction = 0.5
+[particles]
+generator = "mplm_plate"
+width = 0.2
+height = 0.1
+loading = "none"
+[[particles.set]]
+attribute = "constraint"
+value = 8
+y = [-0.001, 0.001]
+[[particles.set]]
+attribute = "constraint"
+value = 9
+x = [-0.001, 0.001]
+y = [-0.001, 0.001]
+[[particles.set]]
+attribute = "load_y"
+value = )" << load << R"(
+y = [0.08, 0.1]
+[[particles.set]]
+attribute = "monitor"
+value = 0
+[[particles.set]]
+attribute = "monitor"
+value = 1
+y = [-0.001, 0.001]
+)";
+    Scenario sc = readScenario(path);
+    double total = 0;
+    const ParticleSet& ps = sc.problem.particles;
+    for (std::size_t k = 0; k < ps.size(); ++k) total += ps.fixedRow(k)[LOAD_Y];
+    Comm comm(MPI_COMM_WORLD);
+    Simulation sim(std::move(sc.problem.model), std::move(sc.problem.particles), sc.problem.run,
+                   comm);
+    sim.run();
+    if (load < 0) {
+      EXPECT_EQ(global(sim, "uy"), 0.0);  // on the bearing, never below it
+      EXPECT_NEAR(global(sim, "reaction_y"), -total, 1e-6 * std::fabs(total));
+    } else {
+      EXPECT_GT(global(sim, "uy"), 0.0);  // lifted off
+      EXPECT_EQ(global(sim, "reaction_y"), 0.0);
+    }
+  }
 }
 
 }  // namespace

@@ -33,7 +33,9 @@ enum Integ { FORCE_X = 0, FORCE_Y, MOMENT, N_INTEG };
 enum BondAttr { OMEGA_T = 0, OMEGA_C, PLASTIC, N_BOND };
 
 enum Material { CONCRETE = 0, STEEL = 1 };
-enum Constraint { FIX_X = 1, FIX_Y = 2, FIX_T = 4 };
+// REST_Y: the particle rests on a support (a bearing): it cannot go below its reference
+// Y but may lift off, and the support pushes only (unilateral contact).
+enum Constraint { FIX_X = 1, FIX_Y = 2, FIX_T = 4, REST_Y = 8 };
 
 inline bool isSteel(const double* fixedRow) { return fixedRow[MATERIAL] == double(STEEL); }
 

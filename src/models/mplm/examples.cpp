@@ -105,15 +105,21 @@ Example beam(const BeamSpec& b) {
     throw std::invalid_argument("the span " + number(b.span) +
                                 " is not a whole number of spacings: no lattice particle at the "
                                 "bottom-right corner to support");
-  if (b.supports) {
+  if (b.supports != "none") {
     const auto left = select(ps, [&](const double* f) {
       return isConcrete(f) && f[1] < tol && f[0] <= b.supportWidth + tol;
     });
     const auto right = select(ps, [&](const double* f) {
       return isConcrete(f) && f[1] < tol && f[0] >= b.span - b.supportWidth - tol;
     });
-    constrain(ps, left, FIX_X | FIX_Y);
-    constrain(ps, right, FIX_Y);
+    if (b.supports == "bearings") {
+      constrain(ps, left, REST_Y);
+      constrain(ps, concreteAt(0, 0), FIX_X);
+      constrain(ps, right, REST_Y);
+    } else {
+      constrain(ps, left, FIX_X | FIX_Y);
+      constrain(ps, right, FIX_Y);
+    }
   }
   const auto top = select(ps, [&](const double* f) { return isConcrete(f) && f[1] > yTop - tol; });
   if (b.lineLoad != 0) loadUniform(ps, top, 0, 0, b.span, 0, -b.lineLoad * b.span);

@@ -56,7 +56,10 @@ struct BeamSpec {
   // particle alone). A single particle carrying the whole reaction (8.7 kN at the plain
   // beam's cracking load) is damaged long before the beam fails.
   double supportWidth = 0.04;
-  bool supports = true;   // false: no supports (the scenario sets its own)
+  // "simple": pinned at the left, roller at the right (held both ways); "bearings": the
+  // beam rests on both (it may lift off; the left one also holds X at its corner);
+  // "none": the scenario sets its own.
+  std::string supports = "simple";
   double lineLoad = 1e3;  // peak uniform load on the top layer at load_scale 1 (N/m); 0: none
 };
 // §4.4.3–4.4.6: simply supported (pinned at the bottom-left end, roller at the right), every

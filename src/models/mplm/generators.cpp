@@ -82,7 +82,7 @@ BeamSpec beamSpec(const Params& p, const Params& model) {
   b.stirrupSpacing = p.number("stirrup_spacing", b.stirrupSpacing, 1e-300, big);
   b.stirrupCover = p.number("stirrup_cover", b.stirrupCover, 0.0, b.depth);
   b.supportWidth = p.number("support_width", b.supportWidth, 0.0, b.span / 2);
-  b.supports = p.choice("supports", "simple", {"simple", "none"}) == "simple";
+  b.supports = p.choice("supports", b.supports, {"simple", "bearings", "none"});
   b.lineLoad = p.number("line_load", b.lineLoad, -big, big);
   return b;
 }

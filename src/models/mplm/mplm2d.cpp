@@ -134,6 +134,10 @@ class Mplm2d final : public Model {
           const double acc = (F[d] + X[LOAD_X + d] * loadNow) * inv[d] - viscous * a[vel[d]];
           a[vel[d]] += acc * h;
           a[pos[d]] += a[vel[d]] * h;
+          if (d == 1 && (in_.constraint[i] & REST_Y) && a[AY] < ref[1]) {
+            a[AY] = ref[1];  // on the support: no penetration, no bounce
+            a[VY] = 0;
+          }
         }
       }
     }
@@ -191,8 +195,11 @@ class Mplm2d final : public Model {
         sum([&](std::size_t i) { return monitored(i, P.alter(i)[AX] - P.fixed(i)[FX_X]); });
     const double uy =
         sum([&](std::size_t i) { return monitored(i, P.alter(i)[AY] - P.fixed(i)[FX_Y]); });
+    // A resting particle is pushed by its support while it sits on it.
     auto reaction = [&](std::size_t i, int d, int bit) {
-      return (in_.constraint[i] & bit) ? monitored(i, -P.integ(i)[d]) : 0.0;
+      const bool resting = d == FORCE_Y && (in_.constraint[i] & REST_Y) &&
+                           P.alter(i)[AY] <= P.fixed(i)[FX_Y] && P.integ(i)[d] < 0;
+      return (in_.constraint[i] & bit) || resting ? monitored(i, -P.integ(i)[d]) : 0.0;
     };
     const double rx = sum([&](std::size_t i) { return reaction(i, FORCE_X, FIX_X); });
     const double ry = sum([&](std::size_t i) { return reaction(i, FORCE_Y, FIX_Y); });
