@@ -33,7 +33,8 @@ cp "$src"/examples/spring/* . 2>/dev/null || true
   -o "$img/rc_beam_damage.png"
 "$pdq" post plot rc_beam_out/history.csv --x uy --y load_factor --x-scale -1000 \
   -o "$img/rc_beam_load_deflection.png" --title "RC beam, thesis §4.4.4" \
-  --xlabel "midspan deflection (mm)" --ylabel "line load (kN/m)"
+  --xlabel "midspan deflection (mm)" --ylabel "line load (kN/m)" \
+  --label "load ramped to 60 kN/m, then held"
 
 # The out-of-tree Morse plugin (examples/plugin): installed pdq, plugin built against it.
 cmake --install "$build" --prefix "$work/prefix" >/dev/null

@@ -10,7 +10,8 @@ OMP_NUM_THREADS=1 mpirun --oversubscribe --allow-run-as-root -np "$ranks" "$PDQ"
 "$PDQ" post picture rc_beam.toml
 "$PDQ" post plot rc_beam_out/history.csv --x uy --y load_factor --x-scale -1000 \
   --title "RC beam, thesis §4.4.4" --xlabel "midspan deflection (mm)" \
-  --ylabel "line load (kN/m)" -o rc_beam_out/load_deflection.png
+  --ylabel "line load (kN/m)" --label "load ramped to 60 kN/m, then held" \
+  -o rc_beam_out/load_deflection.png
 echo
 echo "damage picture:         $(pwd)/rc_beam_out/damage_080000.png"
 echo "load-deflection curve:  $(pwd)/rc_beam_out/load_deflection.png"

@@ -42,7 +42,8 @@ struct PlotCommandOptions {
   std::string x;                    // column for the horizontal axis (default: the first)
   std::vector<std::string> y;       // columns to plot (default: all others)
   std::string out, title, xLabel, yLabel;
-  double xScale = 1, yScale = 1;  // factors applied to the values (units, sign)
+  double xScale = 1, yScale = 1;    // factors applied to the values (units, sign)
+  std::vector<std::string> labels;  // legend labels, one per curve
 };
 void plotCommand(const PlotCommandOptions& o);
 

@@ -138,6 +138,8 @@ int main(int argc, char** argv) {
   plotCmd->add_option("--x-scale", plot.xScale,
                       "multiply the horizontal values (e.g. -1000: m downward to mm)");
   plotCmd->add_option("--y-scale", plot.yScale, "multiply the vertical values");
+  plotCmd->add_option("--label", plot.labels,
+                      "legend label of each curve, in order (repeatable; default: the columns)");
 
   StrengthCommandOptions strength;
   CLI::App* strengthCmd = app.add_subcommand(

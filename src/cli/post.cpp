@@ -111,6 +111,13 @@ void plotCommand(const PlotCommandOptions& o) {
       series.push_back({label, xs, values});
     }
   }
+  if (!o.labels.empty()) {
+    if (o.labels.size() != series.size())
+      throw InputError(
+          "command line", 0,
+          fmt::format("--label given {} time(s) for {} curve(s)", o.labels.size(), series.size()));
+    for (std::size_t k = 0; k < series.size(); ++k) series[k].name = o.labels[k];
+  }
   post::PlotStyle style;
   style.title = o.title.empty() ? fs::path(o.tables[0]).filename().string() : o.title;
   style.xLabel = o.xLabel.empty() ? xName : o.xLabel;

@@ -179,6 +179,18 @@ TEST(Cli, PostDrawsPicturesAndPlots) {
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("did you mean 'broken_bonds'"));
   EXPECT_FALSE(fs::exists(dir + "/out/history.png"));
+  // Labels: one per curve, or an error that counts them.
+  r = runPdq({"post", "plot", "out/history.csv", "-x", "step", "-y", "broken_bonds", "--label",
+              "broken springs", "--y-scale", "0.5", "-o", "labelled.png"},
+             dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_FALSE(readFile(dir + "/labelled.png") == readFile(dir + "/broken.png"));
+  r = runPdq({"post", "plot", "out/history.csv", "-x", "step", "-y", "broken_bonds", "--label", "a",
+              "--label", "b", "-o", "two.png"},
+             dir);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--label given 2 time(s) for 1 curve(s)"));
+  EXPECT_FALSE(fs::exists(dir + "/two.png"));
 }
 
 TEST(Cli, StrengthWithoutADriverSaysSo) {
