@@ -16,6 +16,7 @@ src=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 mkdir -p "$src/docs/mplm"
 cd "$work"
+field() { sed -n "s/^$1: //p" "$rep"; }  # a "key: value" line of the current report
 echo "| example | thesis MPLM | ACI 318 / classical | pdq | pdq / thesis | failure mode |"
 echo "| --- | --- | --- | --- | --- | --- |"
 for e in "${examples[@]}"; do
@@ -23,7 +24,6 @@ for e in "${examples[@]}"; do
   OMP_NUM_THREADS=1 mpirun --oversubscribe --allow-run-as-root -np "$ranks" "$build/pdq" \
     strength "$sc" >"$e.log" 2>&1 || { echo "| $e | pdq strength failed: see $work/$e.log |"; continue; }
   rep=${e}_out/strength/strength.txt
-  field() { sed -n "s/^$1: //p" "$rep"; }
   bracket=$(field strength | sed -E 's/^([^ ]+) to ([^ ]+) ([^ ]+) .*/\1–\2 \3/')
   [ -n "$bracket" ] || bracket="not found ($(tail -1 "$e.log"))"
   aci=$(field "ACI 318"; field classical)

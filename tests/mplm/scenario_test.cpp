@@ -10,6 +10,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <sstream>
 
 #include "engine/error.hpp"
 #include "engine/simulation.hpp"
@@ -21,6 +23,19 @@ namespace pdq::mplm {
 namespace {
 
 std::string examplesDir() { return std::string(std::getenv("PDQ_SOURCE_DIR")) + "/examples/mplm"; }
+
+// Writes `text` to `path` (its folder created) and reads it as a scenario.
+Scenario scenarioFrom(const std::string& path, const std::string& text) {
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  std::ofstream(path) << text;
+  return readScenario(path);
+}
+
+// The scenario's simulation on `comm`, not yet set up.
+std::unique_ptr<Simulation> simulation(Scenario& sc, Comm& comm) {
+  return std::make_unique<Simulation>(std::move(sc.problem.model), std::move(sc.problem.particles),
+                                      sc.problem.run, comm);
+}
 
 TEST(MplmScenarios, EveryExampleFileBuildsTheThesisSpecimen) {
   for (const auto& name : exampleNames()) {
@@ -46,17 +61,13 @@ TEST(MplmScenarios, EveryExampleFileBuildsTheThesisSpecimen) {
 }
 
 TEST(MplmScenarios, SpacingMustMatchTheLattice) {
-  const std::string dir = "mplm_spacing";
-  std::filesystem::create_directories(dir);
-  const std::string path = dir + "/bad.toml";
-  std::ofstream(path) << "steps = 1\n[model]\nname = \"mplm2d\"\n"
-                         "[particles]\ngenerator = \"square\"\nnx = 5\nny = 5\nspacing = 0.01\n";
-  Scenario sc = readScenario(path);
+  Scenario sc = scenarioFrom("mplm_spacing/bad.toml",
+                             "steps = 1\n[model]\nname = \"mplm2d\"\n[particles]\n"
+                             "generator = \"square\"\nnx = 5\nny = 5\nspacing = 0.01\n");
   Comm comm(MPI_COMM_WORLD);
-  Simulation sim(std::move(sc.problem.model), std::move(sc.problem.particles), sc.problem.run,
-                 comm);
+  auto sim = simulation(sc, comm);
   try {
-    sim.setup();
+    sim->setup();
     FAIL() << "setup accepted particles 0.01 apart with spacing 0.02";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("lattice spacing is 0.02"), std::string::npos) << e.what();
@@ -78,11 +89,8 @@ double global(Simulation& sim, const std::string& name) {
 // reaction is the uniaxial force E ε A through the 20 diagonal interactions of a row
 // (an effective width of 10 s), within the lattice's free-edge effect.
 TEST(MplmScenarios, SupportsAndDisplacementControlFromTheScenario) {
-  const std::string dir = "mplm_displacement";
-  std::filesystem::create_directories(dir);
-  const std::string path = dir + "/pull.toml";
   const double s = 0.02, pitch = std::sqrt(3.0) / 2 * s, top = 11 * pitch, u = 1e-5;
-  std::ofstream(path) << R"(steps = 8000
+  Scenario sc = scenarioFrom("mplm_displacement/pull.toml", R"(steps = 8000
 [model]
 name = "mplm2d"
 damage = false
@@ -116,11 +124,10 @@ value = 0
 attribute = "monitor"
 value = 1
 y = [0.19, 0.2]
-)";
-  Scenario sc = readScenario(path);
+)");
   Comm comm(MPI_COMM_WORLD);
-  Simulation sim(std::move(sc.problem.model), std::move(sc.problem.particles), sc.problem.run,
-                 comm);
+  auto simPtr = simulation(sc, comm);
+  Simulation& sim = *simPtr;
   sim.run();
   EXPECT_NEAR(global(sim, "uy"), u, 1e-15);
   const double E = 24.86e9, t = 0.12;
@@ -133,12 +140,10 @@ y = [0.19, 0.2]
 // corner): pushed down by a load on its top row it sits on the bearing, which carries the
 // whole load; pulled up by the same load it lifts off and the bearing carries nothing.
 TEST(MplmScenarios, BearingsPushButNeverPull) {
-  const std::string dir = "mplm_bearing";
-  std::filesystem::create_directories(dir);
   for (double load : {-100.0, 100.0}) {
     SCOPED_TRACE(load);
-    const std::string path = dir + "/rest.toml";
-    std::ofstream(path) << R"(steps = 6000
+    std::ostringstream text;
+    text << R"(steps = 6000
 [model]
 name = "mplm2d"
 damage = false
@@ -160,7 +165,8 @@ x = [-0.001, 0.001]
 y = [-0.001, 0.001]
 [[particles.set]]
 attribute = "load_y"
-value = )" << load << R"(
+value = )"
+         << load << R"(
 y = [0.08, 0.1]
 [[particles.set]]
 attribute = "monitor"
@@ -170,13 +176,13 @@ attribute = "monitor"
 value = 1
 y = [-0.001, 0.001]
 )";
-    Scenario sc = readScenario(path);
+    Scenario sc = scenarioFrom("mplm_bearing/rest.toml", text.str());
     double total = 0;
     const ParticleSet& ps = sc.problem.particles;
     for (std::size_t k = 0; k < ps.size(); ++k) total += ps.fixedRow(k)[LOAD_Y];
     Comm comm(MPI_COMM_WORLD);
-    Simulation sim(std::move(sc.problem.model), std::move(sc.problem.particles), sc.problem.run,
-                   comm);
+    auto simPtr = simulation(sc, comm);
+    Simulation& sim = *simPtr;
     sim.run();
     if (load < 0) {
       EXPECT_EQ(global(sim, "uy"), 0.0);  // on the bearing, never below it

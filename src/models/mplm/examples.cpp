@@ -203,8 +203,7 @@ Example example(const std::string& name) {
     b.stirrupSpacing = 0.432;
     b.stirrupCover = 0.051;
     // Bearings in proportion to the beam, which it rests on: 4 cm ones crush and tear
-    // under the 0.8 MN reaction, and particles held both ways pull the beam's ends down
-    // where a real bearing lets them lift; either way the beam fails at its supports.
+    // under the 0.8 MN reaction, and the beam fails at its supports (docs/mplm.md).
     b.supportWidth = 0.2;
     b.supports = "bearings";
     ex = beam(b);

@@ -134,11 +134,11 @@ class Mplm2d final : public Model {
           const double acc = (F[d] + X[LOAD_X + d] * loadNow) * inv[d] - viscous * a[vel[d]];
           a[vel[d]] += acc * h;
           a[pos[d]] += a[vel[d]] * h;
-          if (d == 1 && (in_.constraint[i] & REST_Y) && a[AY] < ref[1]) {
-            a[AY] = ref[1];  // on the support: no penetration, no bounce
-            a[VY] = 0;
-          }
         }
+      }
+      if ((in_.constraint[i] & (REST_Y | FIX_Y)) == REST_Y && a[AY] < ref[1]) {
+        a[AY] = ref[1];  // on the support: no penetration, no bounce
+        a[VY] = 0;
       }
     }
   }
