@@ -14,7 +14,7 @@
 #include "engine/error.hpp"
 #include "engine/model.hpp"
 #include "prep/generator.hpp"
-#include "scenario/strength.hpp"
+#include "studies/strength_registry.hpp"
 
 namespace {
 

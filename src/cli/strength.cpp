@@ -1,5 +1,5 @@
-// pdq strength: the failure-load search of the scenario's model (scenario/strength.hpp).
-#include "scenario/strength.hpp"
+// pdq strength: the failure-load search of the scenario's model (studies/strength_registry.hpp).
+#include "studies/strength_registry.hpp"
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"

@@ -9,7 +9,7 @@
 
 #include "engine/output.hpp"
 #include "engine/simulation.hpp"
-#include "scenario/problem.hpp"
+#include "engine/problem.hpp"
 
 namespace pdq {
 

@@ -2,7 +2,7 @@
 // The outputs a problem asks for, attached to its Simulation: restart files, timehist.dat,
 // history.csv, ParaView series and pictures.
 #include "engine/simulation.hpp"
-#include "scenario/problem.hpp"
+#include "engine/problem.hpp"
 
 namespace pdq {
 

@@ -13,7 +13,7 @@
 
 #include "engine/particle_set.hpp"
 #include "engine/schema.hpp"
-#include "scenario/problem.hpp"
+#include "engine/problem.hpp"
 
 namespace pdq {
 

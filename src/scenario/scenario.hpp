@@ -16,7 +16,7 @@
 #include <string>
 
 #include "engine/params.hpp"
-#include "scenario/problem.hpp"
+#include "engine/problem.hpp"
 
 namespace pdq {
 
@@ -28,7 +28,7 @@ struct Scenario {
   // came from files): a strength driver reads the specimen's geometry from them.
   std::string generator;
   Params generatorParams{"[particles]"};
-  // The [strength] table: options of `pdq strength` (scenario/strength.hpp), checked by
+  // The [strength] table: options of `pdq strength` (studies/strength_registry.hpp), checked by
   // the model's strength driver; `--set` items override them.
   Params strength{"[strength]"};
   // [strength.model]: model parameters for the search's trials only (e.g. a larger time

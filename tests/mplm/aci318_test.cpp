@@ -1,6 +1,6 @@
 // ACI 318 strengths of the thesis's 2D beams against hand calculations (written out in the
 // comments) and against the values the thesis quotes.
-#include "models/mplm/aci318.hpp"
+#include "studies/aci318.hpp"
 
 #include <gtest/gtest.h>
 

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "harness.hpp"
-#include "models/mplm/attributes.hpp"
-#include "models/mplm/examples.hpp"
-#include "models/mplm/strength.hpp"
+#include "models/mplm/2d/attributes.hpp"
+#include "prep/mplm/examples.hpp"
+#include "studies/mplm_strength.hpp"
 
 namespace pdq::mplm {
 namespace {

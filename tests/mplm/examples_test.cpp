@@ -1,12 +1,12 @@
 // The generators: hexagonal lattices, bars, and the thesis's examples built from them.
-#include "models/mplm/examples.hpp"
+#include "prep/mplm/examples.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "models/mplm/attributes.hpp"
-#include "models/mplm/specimen.hpp"
+#include "models/mplm/2d/attributes.hpp"
+#include "prep/mplm/specimen.hpp"
 #include "prep/hexagonal.hpp"
 #include "prep/rebar.hpp"
 

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include "harness.hpp"
-#include "models/mplm/attributes.hpp"
-#include "models/mplm/specimen.hpp"
+#include "models/mplm/2d/attributes.hpp"
+#include "prep/mplm/specimen.hpp"
 #include "prep/hexagonal.hpp"
 
 namespace pdq::mplm {

@@ -15,9 +15,9 @@
 
 #include "engine/error.hpp"
 #include "engine/simulation.hpp"
-#include "models/mplm/attributes.hpp"
-#include "models/mplm/examples.hpp"
-#include "models/mplm/parameters.hpp"
+#include "models/mplm/2d/attributes.hpp"
+#include "prep/mplm/examples.hpp"
+#include "models/mplm/common/parameters.hpp"
 
 namespace pdq::mplm {
 namespace {

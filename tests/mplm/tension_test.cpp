@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "engine/comm.hpp"
-#include "models/mplm/examples.hpp"
-#include "models/mplm/strength.hpp"
+#include "prep/mplm/examples.hpp"
+#include "studies/mplm_strength.hpp"
 
 namespace pdq::mplm {
 namespace {

@@ -1,11 +1,11 @@
-#include "models/mplm/examples.hpp"
+#include "prep/mplm/examples.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-#include "models/mplm/aci318.hpp"
-#include "models/mplm/attributes.hpp"
-#include "models/mplm/specimen.hpp"
+#include "studies/aci318.hpp"
+#include "models/mplm/2d/attributes.hpp"
+#include "prep/mplm/specimen.hpp"
 #include "prep/hexagonal.hpp"
 
 namespace pdq::mplm {

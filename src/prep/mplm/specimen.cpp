@@ -1,11 +1,11 @@
-#include "models/mplm/specimen.hpp"
+#include "prep/mplm/specimen.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
 
-#include "models/mplm/attributes.hpp"
+#include "models/mplm/2d/attributes.hpp"
 
 namespace pdq::mplm {
 

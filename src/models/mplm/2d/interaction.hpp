@@ -8,7 +8,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "models/mplm/damage.hpp"
+#include "models/mplm/common/damage.hpp"
 
 namespace pdq::mplm {
 

@@ -1,4 +1,4 @@
-#include "models/mplm/aci318.hpp"
+#include "studies/aci318.hpp"
 
 #include <algorithm>
 #include <cmath>

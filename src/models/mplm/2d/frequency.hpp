@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "engine/context.hpp"
-#include "models/mplm/interaction.hpp"
+#include "models/mplm/2d/interaction.hpp"
 
 namespace pdq::mplm {
 

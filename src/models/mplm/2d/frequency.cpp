@@ -1,9 +1,9 @@
-#include "models/mplm/frequency.hpp"
+#include "models/mplm/2d/frequency.hpp"
 
 #include <cmath>
 #include <cstdint>
 
-#include "models/mplm/attributes.hpp"
+#include "models/mplm/2d/attributes.hpp"
 
 namespace pdq::mplm {
 namespace {

@@ -1,10 +1,10 @@
-#include "models/mplm/generators.hpp"
+#include "prep/mplm/generators.hpp"
 
 #include <stdexcept>
 
 #include "engine/error.hpp"
-#include "models/mplm/attributes.hpp"
-#include "models/mplm/parameters.hpp"
+#include "models/mplm/2d/attributes.hpp"
+#include "models/mplm/common/parameters.hpp"
 #include "prep/generator.hpp"
 
 namespace pdq::mplm {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "engine/comm.hpp"
-#include "models/mplm/examples.hpp"
+#include "prep/mplm/examples.hpp"
 
 namespace pdq::mplm {
 

@@ -1,4 +1,4 @@
-#include "models/mplm/parameters.hpp"
+#include "models/mplm/common/parameters.hpp"
 
 #include <cmath>
 #include <stdexcept>

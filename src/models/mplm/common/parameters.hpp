@@ -4,8 +4,8 @@
 #include <string>
 
 #include "engine/params.hpp"
-#include "models/mplm/damage.hpp"
-#include "models/mplm/elastic_constants.hpp"
+#include "models/mplm/common/damage.hpp"
+#include "models/mplm/2d/elastic_constants.hpp"
 
 namespace pdq::mplm {
 

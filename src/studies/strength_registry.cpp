@@ -1,4 +1,4 @@
-#include "scenario/strength.hpp"
+#include "studies/strength_registry.hpp"
 
 #include <map>
 

@@ -1,4 +1,4 @@
-#include "models/mplm/elastic_constants.hpp"
+#include "models/mplm/2d/elastic_constants.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -14,10 +14,10 @@
 
 #include "engine/error.hpp"
 #include "engine/model.hpp"
-#include "models/mplm/attributes.hpp"
-#include "models/mplm/frequency.hpp"
-#include "models/mplm/interaction.hpp"
-#include "models/mplm/parameters.hpp"
+#include "models/mplm/2d/attributes.hpp"
+#include "models/mplm/2d/frequency.hpp"
+#include "models/mplm/2d/interaction.hpp"
+#include "models/mplm/common/parameters.hpp"
 
 namespace pdq::mplm {
 namespace {

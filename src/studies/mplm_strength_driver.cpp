@@ -13,9 +13,9 @@
 #include "engine/atomic_file.hpp"
 #include "engine/error.hpp"
 #include "engine/model.hpp"
-#include "models/mplm/generators.hpp"
-#include "models/mplm/strength.hpp"
-#include "scenario/strength.hpp"
+#include "prep/mplm/generators.hpp"
+#include "studies/mplm_strength.hpp"
+#include "studies/strength_registry.hpp"
 
 namespace pdq::mplm {
 namespace {

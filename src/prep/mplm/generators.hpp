@@ -8,7 +8,7 @@
 // The lattice spacing and thickness are the model's (`spacing`, `thickness` in [model]),
 // so particles and interactions can never disagree on them.
 #include "engine/params.hpp"
-#include "models/mplm/examples.hpp"
+#include "prep/mplm/examples.hpp"
 
 namespace pdq::mplm {
 

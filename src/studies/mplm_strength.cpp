@@ -1,4 +1,4 @@
-#include "models/mplm/strength.hpp"
+#include "studies/mplm_strength.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include "engine/model.hpp"
 #include "engine/simulation.hpp"
 #include "io/standard_outputs.hpp"
-#include "models/mplm/attributes.hpp"
+#include "models/mplm/2d/attributes.hpp"
 
 namespace pdq::mplm {
 namespace {
