@@ -22,6 +22,7 @@
 
 #include "engine/context.hpp"
 #include "engine/params.hpp"
+#include "engine/registry.hpp"
 #include "engine/schema.hpp"
 
 namespace pdq {
@@ -57,14 +58,16 @@ class Model {
   virtual std::vector<double> globalValues(Context&) { return {}; }
 };
 
-class ModelRegistry {
- public:
-  using Factory = std::function<std::unique_ptr<Model>()>;
-  static bool add(const std::string& name, const std::string& description, Factory f);
-  // Throws InputError (naming `source`) for an unknown name, suggesting the nearest.
+using ModelFactory = std::function<std::unique_ptr<Model>()>;
+template <>
+Registry<ModelFactory>::Table& Registry<ModelFactory>::table();
+
+struct ModelRegistry : Registry<ModelFactory> {
+  // A new, unconfigured model; InputError (naming `source` and `line`) for an unknown name.
   static std::unique_ptr<Model> create(const std::string& name, const std::string& source = "",
-                                       int line = 0);
-  static std::vector<std::pair<std::string, std::string>> list();  // name, description
+                                       int line = 0) {
+    return get(name, source, line)();
+  }
 };
 
 }  // namespace pdq

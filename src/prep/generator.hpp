@@ -21,6 +21,7 @@
 
 #include "engine/params.hpp"
 #include "engine/particle_set.hpp"
+#include "engine/registry.hpp"
 #include "engine/schema.hpp"
 
 namespace pdq {
@@ -32,16 +33,10 @@ struct Generated {
   std::optional<std::array<double, 3>> boxLo, boxHi;
 };
 
-class GeneratorRegistry {
- public:
-  using Generator = std::function<Generated(const Params&, const Schema&, const Params& model)>;
-  static bool add(const std::string& name, const std::string& description, Generator g);
-  // Throws InputError (naming `source` and `line`) for an unknown name, suggesting the
-  // nearest and listing the known ones.
-  static const Generator& get(const std::string& name, const std::string& source = "",
-                              int line = 0);
-  static std::vector<std::pair<std::string, std::string>> list();  // name, description
-};
+using Generator = std::function<Generated(const Params&, const Schema&, const Params& model)>;
+using GeneratorRegistry = Registry<Generator>;
+template <>
+Registry<Generator>::Table& Registry<Generator>::table();
 
 namespace detail {
 // Calls a generator with or without the [model] table, whichever it takes.

@@ -15,18 +15,16 @@
 
 #include "engine/comm.hpp"
 #include "engine/params.hpp"
+#include "engine/registry.hpp"
 #include "scenario/scenario.hpp"
 
 namespace pdq {
 
-class StrengthRegistry {
- public:
-  using Driver = std::function<void(Scenario&, const Params&, Comm&)>;
-  static bool add(const std::string& model, const std::string& description, Driver d);
-  // Throws InputError (naming `source`) when the model has no strength driver.
-  static const Driver& get(const std::string& model, const std::string& source = "");
-  static std::vector<std::pair<std::string, std::string>> list();  // model, description
-};
+using StrengthDriver = std::function<void(Scenario&, const Params&, Comm&)>;
+// Keyed by model name; get() throws InputError when the model has no strength driver.
+using StrengthRegistry = Registry<StrengthDriver>;
+template <>
+Registry<StrengthDriver>::Table& Registry<StrengthDriver>::table();
 
 }  // namespace pdq
 
