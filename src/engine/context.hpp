@@ -1,9 +1,10 @@
 #pragma once
 // What a model sees of the engine: the particles of its procCube (owned first, ghosts
 // after), their bonds, the clock, canonical neighbour iteration, ghost refreshes of
-// chosen attributes, and global reductions that give the same bits on any number of
+// their own arrays, and global reductions that give the same bits on any number of
 // ranks. Nothing here exposes MPI or rank boundaries.
 #include <ostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -39,9 +40,11 @@ class Context {
   void forEachNearby(std::size_t i, F&& f) const {
     cube_.forEachNearby(i, std::forward<F>(f));
   }
-  // Copies the listed alterable columns of the owned particles to their ghosts (e.g. a
-  // state-based model's dilatation between its two force passes).
-  void refreshGhosts(const std::vector<int>& alterColumns) { cube_.halo(alterColumns); }
+  // Gives the ghosts of a model's own array their owners' values: `values` holds `width`
+  // numbers per local particle (owned first, then ghosts; size >= particles.local() x
+  // width), e.g. a state-based model's dilatation between its two force passes. Every
+  // rank must call it alike.
+  void refreshGhosts(std::span<double> values, int width) { cube_.refreshGhosts(values, width); }
 
   // Global reductions, identical on every rank and for every processor grid.
   double sum(ExactSum& acc) const { return comm_.sum(acc); }

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <numeric>
 #include <sstream>
+#include <stdexcept>
 
 #include "engine/error.hpp"
 
@@ -12,7 +13,7 @@ namespace pdq {
 
 namespace {
 
-constexpr int kTagBorder = 11, kTagHalo = 12, kTagMigrate = 13;
+constexpr int kTagBorder = 11, kTagHalo = 12, kTagMigrate = 13, kTagScratch = 14;
 
 void putGid(std::vector<char>& buf, Gid g) {
   const char* c = reinterpret_cast<const char*>(&g);
@@ -275,25 +276,16 @@ void ProcCube::halo() {
   stats_.haloWallParticles = wall;
 }
 
-void ProcCube::halo(const std::vector<int>& cols) {
-  const int nA = p_.schema().nAlter(), nc = static_cast<int>(cols.size());
-  const Domain& dom = dec_.domain();
-  auto& table = p_.alterTable();
-  std::vector<double> in;
+void ProcCube::refreshGhosts(std::span<double> values, int width) {
+  const std::size_t w = static_cast<std::size_t>(width);
+  if (values.size() < p_.local() * w)
+    throw std::logic_error("refreshGhosts: the array is shorter than local particles x width");
   for (const Direction& d : dirs_) {
-    sendBuf_.resize(d.send.size() * nc);
+    sendBuf_.resize(d.send.size() * w);
     double* s = sendBuf_.data();
-    for (std::uint32_t i : d.send)
-      for (int c : cols) {
-        double v = table[std::size_t(i) * nA + c];
-        if (d.wrapsOut && c == d.axis) v -= d.dir * dom.length(d.axis);
-        *s++ = v;
-      }
-    in.resize(d.recvCount * nc);
-    comm_.sendrecvKnown(sendBuf_.data(), d.dest >= 0 ? sendBuf_.size() : 0, d.dest, in.data(),
-                        in.size(), d.src, kTagHalo);
-    for (std::size_t k = 0; k < d.recvCount; ++k)
-      for (int q = 0; q < nc; ++q) table[(d.recvFirst + k) * nA + cols[q]] = in[k * nc + q];
+    for (std::uint32_t i : d.send) s = std::copy_n(values.data() + i * w, w, s);
+    comm_.sendrecvKnown(sendBuf_.data(), d.dest >= 0 ? sendBuf_.size() : 0, d.dest,
+                        values.data() + d.recvFirst * w, d.recvCount * w, d.src, kTagScratch);
   }
 }
 

@@ -13,6 +13,7 @@
 // grid.
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/bonds.hpp"
@@ -45,9 +46,12 @@ class ProcCube {
   // Shuffle (thesis §3.3.4): wraps periodic positions, migrates particles that left the
   // core, then rebuild(). Call only for models whose particles change neighbours.
   void shuffle(long step);
-  // Halo exchange of all alterable attributes (or of the listed columns only).
+  // Halo exchange of all alterable attributes.
   void halo();
-  void halo(const std::vector<int>& alterColumns);
+  // The same plan for a model's own array of `width` values per local particle (owned
+  // first, then ghosts): the ghosts' rows get their owners' values. Nothing is shifted
+  // across periodic boundaries, so positions do not belong here.
+  void refreshGhosts(std::span<double> values, int width);
   // Bonds: map each bond's partner global ID to a local index (nearest copy if several).
   void remapBonds(long step);
 

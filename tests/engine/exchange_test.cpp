@@ -31,6 +31,31 @@ TEST(Exchange, HaloMessagesAndBytes3D) {
     EXPECT_EQ(s.haloMessages, 0u);
 }
 
+// A state-based model's dilatation is scratch refreshed inside its force step: the halo
+// carries positions and velocities only.
+TEST(Exchange, LpsHaloCarriesPositionsAndVelocitiesOnly) {
+  Comm comm;
+  auto model = test::makeModel(
+      "lps",
+      {{"E", "1e9"}, {"nu", "0.25"}, {"horizon", "3.1"}, {"density", "1000"}, {"dt", "1e-5"}});
+  ParticleSet ps = test::cubicBlock(model->schema(), 10, 10, 6, 1.0);
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    ps.fixedRow(k)[9] = 1.0;  // volume
+    ps.alterRow(k)[3] = (ps.gid[k] % 2 ? 0.01 : -0.01);
+  }
+  RunConfig cfg;
+  cfg.steps = 3;
+  cfg.outDir = "out_exchange_lps";
+  Simulation sim(std::move(model), std::move(ps), cfg, comm);
+  sim.run();
+  const StepStats& s = sim.stats();
+  EXPECT_EQ(sim.particles().schema().nAlter(), 6);
+  EXPECT_EQ(s.haloBytes, s.haloWallParticles * 6 * sizeof(double));
+  if (comm.size() > 1) {
+    EXPECT_GT(s.haloWallParticles, 0u);
+  }
+}
+
 TEST(Exchange, HaloMessages2D) {
   Comm comm;
   Simulation sim = makeRun(comm, 1, false, 3);

@@ -128,10 +128,10 @@ TEST_P(LjForce, IsMinusTheGradientOfThePotentialEnergy) {
       for (int s = 0; s < 2; ++s) {
         const double x0 = mine < P.owned() ? P.alter(mine)[a] : 0;
         if (mine < P.owned()) P.alter(mine)[a] = x0 + (s ? h : -h);
-        ctx.refreshGhosts({0, 1, 2});
+        sim->procCube().halo();
         pe[s] = global(*sim, "potential");
         if (mine < P.owned()) P.alter(mine)[a] = x0;
-        ctx.refreshGhosts({0, 1, 2});
+        sim->procCube().halo();
       }
       const double fd = -(pe[1] - pe[0]) / (2 * h);
       EXPECT_NEAR(f, fd, 1e-6 * std::max(1.0, std::fabs(f)))

@@ -16,8 +16,8 @@
 #include "engine/error.hpp"
 #include "engine/simulation.hpp"
 #include "models/mplm/2d/attributes.hpp"
+#include "models/mplm/2d/parameters.hpp"
 #include "prep/mplm/examples.hpp"
-#include "models/mplm/common/parameters.hpp"
 
 namespace pdq::mplm {
 namespace {
@@ -51,7 +51,7 @@ TEST(MplmScenarios, EveryExampleFileBuildsTheThesisSpecimen) {
     EXPECT_EQ(sc.problem.run.steps, ex.steps);
     Params exParams("example");
     for (const auto& [key, text] : ex.params) exParams.set(key, text);
-    Parameters fromFile, fromExample;
+    Parameters2d fromFile, fromExample;
     fromFile.read(sc.modelParams);
     fromExample.read(exParams);
     EXPECT_EQ(fromFile.s, fromExample.s);

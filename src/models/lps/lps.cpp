@@ -18,7 +18,6 @@ namespace pdq::peri {
 namespace {
 
 class Lps final : public PeriModel {
-  enum { THETA = VZ + 1 };
   enum { INV_M = WEIGHT + 1 };
 
   void configureModel(const Params& p) override {
@@ -29,7 +28,6 @@ class Lps final : public PeriModel {
     }
     constantInfluence_ = p.choice("influence", "inverse", {"inverse", "constant"}) == "constant";
   }
-  std::vector<std::string> alterExtra() const override { return {"theta"}; }
   std::vector<std::string> bondExtra() const override { return {"inv_m"}; }
 
   void prepareBonds(Context& ctx, const std::vector<double>& volume) override {
@@ -55,7 +53,7 @@ class Lps final : public PeriModel {
       }
       invM_[i] = m > 0 ? 1.0 / m : 0.0;
     }
-    const std::vector<double> invM = shareWithGhosts(ctx, THETA, invM_);
+    const std::vector<double> invM = onGhosts(ctx, invM_);
     for (std::size_t i = 0; i < P.owned(); ++i)
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) B.attr(b)[INV_M] = invM[B.partner(b)];
   }
@@ -65,14 +63,15 @@ class Lps final : public PeriModel {
     Bonds& B = ctx.bonds;
     const long n = static_cast<long>(P.owned());
     if (B.empty()) {
-      for (long i = 0; i < n; ++i) std::fill_n(P.integ(i), 3, 0.0), P.alter(i)[THETA] = 0;
+      for (long i = 0; i < n; ++i) std::fill_n(P.integ(i), 3, 0.0);
       return;
     }
+    theta_.resize(P.local());
     const LpsView view{B.partners().data(),
                        B.attr(0),
                        P.alter(0),
                        std::size_t(P.schema().nAlter()),
-                       THETA,
+                       theta_.data(),
                        A_ / density_,
                        B_ / density_,
                        criticalStretch_,
@@ -82,12 +81,12 @@ class Lps final : public PeriModel {
     // Pass 1: dilatation of the owned particles, then to the ghosts.
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i)
-      P.alter(i)[THETA] = D * invM_[i] * k.dilatation(view, i, B.begin(i), B.end(i));
-    ctx.refreshGhosts({THETA});
+      theta_[i] = D * invM_[i] * k.dilatation(view, i, B.begin(i), B.end(i));
+    ctx.refreshGhosts(theta_, 1);
     // Pass 2: forces.
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i)
-      k.force(view, i, B.begin(i), B.end(i), P.alter(i)[THETA] * invM_[i], invM_[i], P.integ(i));
+      k.force(view, i, B.begin(i), B.end(i), theta_[i] * invM_[i], invM_[i], P.integ(i));
   }
 
   // V_i W_i, W_i = κ θ² / 2 + (B / 2 m_i) Σ_j ω (e - θ |ξ| / D)² V_j, with θ recomputed
@@ -118,7 +117,8 @@ class Lps final : public PeriModel {
   bool constantInfluence_ = false;
   LpsKernels kernels_ = lpsKernels();
   double kappa_ = 0, A_ = 0, B_ = 0;
-  std::vector<double> invM_;  // 1 / m of the owned particles (they never move between ranks)
+  std::vector<double> invM_;   // 1 / m of the owned particles (they never move between ranks)
+  std::vector<double> theta_;  // dilatation of every local particle, within a force step
 };
 
 PDQ_REGISTER_MODEL(Lps, "lps", "linear peridynamic solid (ordinary state-based peridynamics)");

@@ -34,7 +34,7 @@ inline void forceBond(const LpsView& v, const double* xi, std::size_t b, double 
     v.bonds->kill(b);
   }
   const double rk =
-      ab[1] * (v.a * ab[0] * (qi + xj[v.theta] * ab[2]) + v.b * (invMi + ab[2]) * ext);
+      ab[1] * (v.a * ab[0] * (qi + v.theta[v.partner[b]] * ab[2]) + v.b * (invMi + ab[2]) * ext);
   const double t = rk / len;
   *sx += t * r[0];
   *sy += t * r[1];
@@ -121,7 +121,8 @@ struct Four {
     const Four f = four(v, xi, b, p);
     const __m256d len0 = column(v.attr, b, 0), invMj = column(v.attr, b, 2);
     __m256d w = column(v.attr, b, 1);
-    const __m256d thj = _mm256_set_pd(p[3][v.theta], p[2][v.theta], p[1][v.theta], p[0][v.theta]);
+    const std::int32_t* j = v.partner + b;
+    const __m256d thj = _mm256_set_pd(v.theta[j[3]], v.theta[j[2]], v.theta[j[1]], v.theta[j[0]]);
     const __m256d ext = _mm256_sub_pd(f.len, len0);
     if (v.criticalStretch > 0) {
       const __m256d over = _mm256_cmp_pd(ext, _mm256_mul_pd(sc, len0), _CMP_GT_OQ);

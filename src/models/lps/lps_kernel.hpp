@@ -14,7 +14,7 @@ struct LpsView {
   double* attr;                 // per bond: reference length, ω V_j w (0 once broken), 1/m_j
   const double* x;              // alterable rows (x, y, z first), nA doubles each
   std::size_t nA;
-  std::size_t theta;       // column of the dilatation in the alterable rows
+  const double* theta;     // dilatation of every local particle (owned and ghosts)
   double a, b;             // A/ρ and B/ρ of the force state
   double criticalStretch;  // 0: bonds never break
   Bonds* bonds;            // a bond that breaks is also killed here (the engine's flag)

@@ -1,5 +1,6 @@
 #include "models/peri/peri_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -116,18 +117,10 @@ bool PeriModel::cutByNotch(const double* a, const double* b) const {
   return false;
 }
 
-std::vector<double> PeriModel::shareWithGhosts(Context& ctx, int column,
-                                               const std::vector<double>& owned) {
-  Particles& P = ctx.particles;
-  std::vector<double> saved(P.owned());
-  for (std::size_t i = 0; i < P.owned(); ++i) {
-    saved[i] = P.alter(i)[column];
-    P.alter(i)[column] = owned[i];
-  }
-  ctx.refreshGhosts({column});
-  std::vector<double> all(P.local());
-  for (std::size_t i = 0; i < P.local(); ++i) all[i] = P.alter(i)[column];
-  for (std::size_t i = 0; i < P.owned(); ++i) P.alter(i)[column] = saved[i];
+std::vector<double> PeriModel::onGhosts(Context& ctx, const std::vector<double>& owned, int width) {
+  std::vector<double> all(ctx.particles.local() * static_cast<std::size_t>(width));
+  std::copy(owned.begin(), owned.end(), all.begin());
+  ctx.refreshGhosts(all, width);
   return all;
 }
 

@@ -54,11 +54,9 @@ class PeriModel : public Model {
   // True when the bond's reference segment crosses the notch (it is never created).
   bool cutByNotch(const double* Xi, const double* Xj) const;
 
-  // The value of an owned-particle quantity at every local particle (owned and ghosts):
-  // it travels to the ghosts through alterable column `column`, whose owned values are
-  // restored afterwards (the engine refreshes the ghosts again after setup).
-  static std::vector<double> shareWithGhosts(Context& ctx, int column,
-                                             const std::vector<double>& owned);
+  // `width` values per owned particle, extended to every local particle (owned and ghosts).
+  static std::vector<double> onGhosts(Context& ctx, const std::vector<double>& owned,
+                                      int width = 1);
 
   double E_ = 0, nu_ = 0, delta_ = 0, thickness_ = 1, density_ = 0, dt_ = 0;
   double criticalStretch_ = 0, damping_ = 0, spacing_ = 0;

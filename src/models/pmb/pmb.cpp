@@ -29,24 +29,25 @@ class Pmb final : public PeriModel {
     Particles& P = ctx.particles;
     Bonds& B = ctx.bonds;
     c_ = pmbMicromodulus(dim_, E_, delta_, thickness_);
-    std::vector<std::vector<double>> g;  // per axis, at every local particle
+    const std::size_t D = static_cast<std::size_t>(dim_);
+    std::vector<double> g;  // g_a of every local particle, D per particle
     if (surfaceCorrection_) {
       const double pi = std::numbers::pi;
       const double full =
           dim_ == 3 ? pi * std::pow(delta_, 4) / 5 : pi * thickness_ * std::pow(delta_, 3) / 4;
-      for (int a = 0; a < dim_; ++a) {
-        std::vector<double> own(P.owned());
-        for (std::size_t i = 0; i < P.owned(); ++i) {
-          const double* Xi = P.fixed(i);
+      std::vector<double> own(D * P.owned());
+      for (std::size_t i = 0; i < P.owned(); ++i) {
+        const double* Xi = P.fixed(i);
+        for (std::size_t a = 0; a < D; ++a) {
           double q = 0;
           for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
             const double r = B.attr(b)[XI], n = (P.fixed(B.partner(b))[a] - Xi[a]) / r;
             q += volume[b] * r * n * n * n * n;
           }
-          own[i] = q > 0 ? full / q : 1.0;
+          own[D * i + a] = q > 0 ? full / q : 1.0;
         }
-        g.push_back(shareWithGhosts(ctx, VX, own));
       }
+      g = onGhosts(ctx, own, dim_);
     }
     for (std::size_t i = 0; i < P.owned(); ++i)
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
@@ -55,9 +56,9 @@ class Pmb final : public PeriModel {
         double factor = 1;
         if (surfaceCorrection_) {
           double sum = 0;
-          for (int a = 0; a < dim_; ++a) {
+          for (std::size_t a = 0; a < D; ++a) {
             const double n = (P.fixed(j)[a] - P.fixed(i)[a]) / attr[XI];
-            const double ga = 0.5 * (g[a][i] + g[a][j]);
+            const double ga = 0.5 * (g[D * i + a] + g[D * j + a]);
             sum += n * n / (ga * ga);
           }
           factor = 1 / std::sqrt(sum);

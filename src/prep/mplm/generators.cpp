@@ -4,7 +4,7 @@
 
 #include "engine/error.hpp"
 #include "models/mplm/2d/attributes.hpp"
-#include "models/mplm/common/parameters.hpp"
+#include "models/mplm/2d/parameters.hpp"
 #include "prep/generator.hpp"
 
 namespace pdq::mplm {
@@ -12,8 +12,8 @@ namespace {
 
 constexpr double big = 1e300;
 
-Parameters modelParameters(const Params& model) {
-  Parameters par;
+Parameters2d modelParameters(const Params& model) {
+  Parameters2d par;
   par.read(model);
   return par;
 }
@@ -53,7 +53,7 @@ Generated beamGenerator(const Params& p, const Schema& schema, const Params& mod
 }  // namespace
 
 PlateSpec plateSpec(const Params& p, const Params& model) {
-  const Parameters par = modelParameters(model);
+  const Parameters2d par = modelParameters(model);
   PlateSpec s;
   s.spacing = par.s;
   s.thickness = par.thickness;
@@ -69,7 +69,7 @@ PlateSpec plateSpec(const Params& p, const Params& model) {
 }
 
 BeamSpec beamSpec(const Params& p, const Params& model) {
-  const Parameters par = modelParameters(model);
+  const Parameters2d par = modelParameters(model);
   BeamSpec b;
   b.spacing = par.s;
   b.thickness = par.thickness;

@@ -9,12 +9,9 @@
 #include <cstdint>
 
 #include "models/mplm/common/damage.hpp"
+#include "models/mplm/common/interactions.hpp"
 
 namespace pdq::mplm {
-
-// Concrete interactions damage; Elastic ones (steel–concrete links, or concrete with damage
-// off) never do; Bar ones are steel, elastic–perfectly plastic in stretch.
-enum class Kind : std::uint8_t { Concrete, Elastic, Bar };
 
 struct Interaction {
   std::int32_t j = 0;  // partner's local index
@@ -98,13 +95,7 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const DamageL
     // compressive damage ω_c also takes the axial force in compression.
     axialKeep = epsA >= 0 ? bendKeep : (law.crushing ? 1 - omC : 1.0);
   } else if (state && k.kind == Kind::Bar) {
-    // Elastic–perfectly plastic axial force: the plastic stretch follows the yield limit.
-    double plastic = state[2];
-    const double elastic = epsA - plastic;
-    if (elastic > k.epsY)
-      plastic = epsA - k.epsY;
-    else if (elastic < -k.epsY)
-      plastic = epsA + k.epsY;
+    const double plastic = plasticStrain(epsA, state[2], k.epsY);
     if (update) state[2] = plastic;
     stretch = ch.da - plastic * k.L0;
   }

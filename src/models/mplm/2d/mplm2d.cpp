@@ -15,12 +15,17 @@
 #include "engine/error.hpp"
 #include "engine/model.hpp"
 #include "models/mplm/2d/attributes.hpp"
-#include "models/mplm/2d/frequency.hpp"
 #include "models/mplm/2d/interaction.hpp"
-#include "models/mplm/common/parameters.hpp"
+#include "models/mplm/2d/parameters.hpp"
+#include "models/mplm/common/frequency.hpp"
 
 namespace pdq::mplm {
 namespace {
+
+struct Inertia {
+  std::vector<double> mass, inertia;  // per owned particle
+  std::vector<int> constraint;        // Constraint bits per owned particle
+};
 
 class Mplm2d final : public Model {
  public:
@@ -62,13 +67,13 @@ class Mplm2d final : public Model {
         inter_[b] = makeInteraction(P, i, static_cast<std::size_t>(ctx.bonds.partner(b)));
         omegaBond = std::max(omegaBond, std::sqrt(inter_[b].ka / massOf(P.fixed(i))));
       }
-    omegaMax_ = highestFrequency(ctx, inter_, in_, par_.powerIterations);
+    omegaMax_ = highestFrequency(ctx);
     const double c0 = std::sqrt(par_.E / par_.rho);
     const double thesisDt = par_.s / (std::numbers::pi * c0);
     // A mode at ω_max sees about ζ ω_max / ω_bond of critical damping from eq. 4.21.
     omegaBond = ctx.max(omegaBond);
     const double zm = std::max(par_.zeta, par_.zetaRotation) * omegaMax_ / omegaBond;
-    const double stable = 2 / omegaMax_ * (std::sqrt(1 + zm * zm) - zm);
+    const double stable = stableStep(omegaMax_, zm);
     if (!(par_.dt > 0)) ctx.setDt(par_.dtSafety * stable);
     if (ctx.root())
       ctx.log() << std::setprecision(4) << "mplm2d: highest frequency " << omegaMax_
@@ -253,13 +258,8 @@ class Mplm2d final : public Model {
 
   bool interacts(const double* fi, const double* fj) const {
     const double dx = fj[FX_X] - fi[FX_X], dy = fj[FX_Y] - fi[FX_Y];
-    const double d = std::sqrt(dx * dx + dy * dy);
-    const double within = par_.s * (1 + 1e-6);
-    const bool si = isSteel(fi), sj = isSteel(fj);
-    if (!si && !sj) return d <= par_.horizon();
-    if (si && sj) return fi[BAR] == fj[BAR] && d <= within;
-    const double* steel = si ? fi : fj;
-    return steel[LINK] != 0 && d > 0 && d <= within;
+    auto end = [](const double* f) { return End{isSteel(f), f[BAR], f[LINK] != 0}; };
+    return mplm::interacts(end(fi), end(fj), std::sqrt(dx * dx + dy * dy), par_.horizon(), par_.s);
   }
 
   Interaction makeInteraction(const Particles& P, std::size_t i, std::size_t j) const {
@@ -275,33 +275,57 @@ class Mplm2d final : public Model {
     k.n0y = k.r0y / k.L0;
     const bool si = isSteel(fi), sj = isSteel(fj);
     const double a = par_.concrete.a, b = par_.concrete.b, s = par_.s, L = k.L0;
-    if (si && sj) {
-      k.kind = Kind::Bar;
+    k.kind = kindOf(si, sj, par_.damage);
+    if (k.kind == Kind::Bar) {
       k.ka = par_.steelE * fi[AREA] / L;
       k.kb = par_.steelE * fi[SECOND_MOMENT] / L;
       k.epsY = par_.steelYield;
     } else if (si || sj) {
-      // Steel–concrete links never damage (§4.4). "concrete": the translational stiffness
-      // of a concrete interaction (a/s axially, 12b/s³ across) whatever the distance, so a
-      // short link does not stiffen the lattice; "length": eq. 4.3 with the actual length.
-      k.kind = Kind::Elastic;
-      const bool likeConcrete = par_.link == "concrete";
-      k.ka = likeConcrete ? a / s : a / L;
-      k.kb = likeConcrete ? b * L * L / (s * s * s) : b / L;
+      k.ka = linkAxial(par_.link, a, s, L);
+      k.kb = linkBending(par_.link, b, s, L);
     } else {
-      k.kind = par_.damage ? Kind::Concrete : Kind::Elastic;
       k.ka = a / L;
       k.kb = b / L;
     }
-    // Eq. 4.21 with ω_n = √(k/m) of the interaction: c = 2ζ √(k m), m the pair's
-    // harmonic mean mass (the particle mass for like particles); likewise for rotation.
-    const double mi = massOf(fi), mj = massOf(fj);
-    const double m = 2 * mi * mj / (mi + mj);
-    const double Ii = inertiaOf(fi), Ij = inertiaOf(fj);
-    const double I = 2 * Ii * Ij / (Ii + Ij);
-    k.c = 2 * par_.zeta * std::sqrt(k.ka * m);
-    k.cr = 2 * par_.zetaRotation * std::sqrt(4 * k.kb * I);
+    // Eq. 4.21 for translation (stiffness a/d) and rotation (4b/d: moment per end rotation).
+    k.c = dampingCoefficient(par_.zeta, k.ka, massOf(fi), massOf(fj));
+    k.cr = dampingCoefficient(par_.zetaRotation, 4 * k.kb, inertiaOf(fi), inertiaOf(fj));
     return k;
+  }
+
+  // ω_max of the undamaged lattice in small deformation (eq. 4.3), DOFs u_x, u_y, θ_z.
+  double highestFrequency(Context& ctx) const {
+    const Particles& P = ctx.particles;
+    const std::size_t n = P.owned();
+    DofSystem sys;
+    sys.dofs = 3;
+    sys.mass.resize(3 * n);
+    sys.held.resize(3 * n);
+    constexpr int bit[3] = {FIX_X, FIX_Y, FIX_T};
+    for (std::size_t i = 0; i < n; ++i)
+      for (int d = 0; d < 3; ++d) {
+        sys.mass[3 * i + d] = d < 2 ? in_.mass[i] : in_.inertia[i];
+        sys.held[3 * i + d] = (in_.constraint[i] & bit[d]) != 0;
+      }
+    auto restoring = [&](std::span<const double> u, std::span<double> f) {
+      for (std::size_t i = 0; i < n; ++i) {
+        double fx = 0, fy = 0, m = 0;
+        for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
+          const Interaction& k = inter_[b];
+          const std::size_t j = static_cast<std::size_t>(k.j);
+          const Chord ch = smallChord(k, u[3 * j] - u[3 * i], u[3 * j + 1] - u[3 * i + 1],
+                                      u[3 * i + 2], u[3 * j + 2]);
+          const EndLoad e = elasticForce(k, ch, DamageLaw{}, nullptr, false);
+          fx += e.fx;
+          fy += e.fy;
+          m += e.m;
+        }
+        f[3 * i] = fx;
+        f[3 * i + 1] = fy;
+        f[3 * i + 2] = m;
+      }
+    };
+    return mplm::highestFrequency(ctx, sys, restoring, par_.powerIterations);
   }
 
   // 2 ζ_h ω₁, ω₁² = F·u / (u·M·u) the Rayleigh quotient of the current deflection under
@@ -392,7 +416,7 @@ class Mplm2d final : public Model {
     return {sxx / (2 * V), syy / (2 * V), sxy / (2 * V)};
   }
 
-  Parameters par_;
+  Parameters2d par_;
   std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
   std::vector<double> cs_;          // cos θ, sin θ per local particle (co-rotational form)
   Inertia in_;

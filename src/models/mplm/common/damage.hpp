@@ -37,11 +37,4 @@ struct DamageLaw {
   }
 };
 
-// α_t from the fracture energy G_F: cutting one row of interactions per unit crack length
-// releases the area under the linear softening curve, G_F = 2 a ε_t² α_t / (√3 t), so
-// α_t = √3 G_F t / (2 a ε_t²) (MPLM-NOTES; ≈ 27 for the thesis's data, which used 10).
-inline double alphaFromFractureEnergy(double GF, double a, double t, double epsT) {
-  return std::sqrt(3.0) * GF * t / (2 * a * epsT * epsT);
-}
-
 }  // namespace pdq::mplm

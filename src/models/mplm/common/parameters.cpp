@@ -1,8 +1,5 @@
 #include "models/mplm/common/parameters.hpp"
 
-#include <cmath>
-#include <stdexcept>
-
 #include "engine/error.hpp"
 
 namespace pdq::mplm {
@@ -11,24 +8,9 @@ void Parameters::read(const Params& p) {
   constexpr double big = 1e300;
   s = p.number("spacing", s, 1e-12, big);
   horizonFactor = p.number("horizon_factor", horizonFactor, 1.0, 1.7320508);
-  thickness = p.number("thickness", thickness, 1e-12, big);
   E = p.number("youngs_modulus", E, 1e-12, big);
   nu = p.number("poisson_ratio", nu, -0.99, 0.3333);
   rho = p.number("density", rho, 1e-12, big);
-  elasticity = p.choice("elasticity", elasticity, {"plane_stress", "plane_strain", "given"});
-  if (elasticity == "given") {
-    concrete.a = p.number("micro_a", 0.0, 1e-300, big);
-    concrete.b = p.number("micro_b", 0.0, 0.0, big);
-    if (!(concrete.a > 0))
-      throw InputError(p.owner(), 0, "elasticity = \"given\" needs micro_a > 0 (and micro_b)");
-  } else {
-    try {
-      concrete = forContinuum(elasticity, E, nu, s, thickness);
-    } catch (const std::domain_error& e) {
-      const auto v = p.raw("poisson_ratio");
-      throw InputError(v ? v->file : p.owner(), v ? v->line : 0, e.what());
-    }
-  }
   kinematics = p.choice("kinematics", kinematics, {"corotational", "small"});
 
   damage = p.flag("damage", damage);
@@ -37,15 +19,10 @@ void Parameters::read(const Params& p) {
   law.alphaC = p.number("compressive_ratio", law.alphaC, 1.000001, big);
   law.beta = p.number("beta", law.beta, 0.0, big);
   law.crushing = p.flag("crushing", law.crushing);
-  const double GF = p.number("fracture_energy", 0.0, 0.0, big);
+  fractureEnergy = p.number("fracture_energy", 0.0, 0.0, big);
   law.alphaT = p.number("tensile_ratio", law.alphaT, 1.000001, big);
-  if (GF > 0) {
-    if (p.has("tensile_ratio"))
-      throw InputError(p.owner(), 0, "give either tensile_ratio or fracture_energy, not both");
-    law.alphaT = alphaFromFractureEnergy(GF, concrete.a, thickness, law.epsT);
-    if (!(law.alphaT > 1))
-      throw InputError(p.owner(), 0, "fracture_energy gives a tensile_ratio <= 1");
-  }
+  if (fractureEnergy > 0 && p.has("tensile_ratio"))
+    throw InputError(p.owner(), 0, "give either tensile_ratio or fracture_energy, not both");
 
   steelE = p.number("steel_modulus", steelE, 1e-12, big);
   steelRho = p.number("steel_density", steelRho, 1e-12, big);
@@ -65,7 +42,6 @@ void Parameters::read(const Params& p) {
   loadScale = p.number("load_scale", loadScale, -big, big);
 }
 
-double Parameters::concreteMass() const { return rho * std::sqrt(3.0) / 2 * s * s * thickness; }
 double Parameters::steelMass(double area) const { return steelRho * area * s; }
 
 }  // namespace pdq::mplm

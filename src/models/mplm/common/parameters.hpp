@@ -1,26 +1,24 @@
 #pragma once
-// Every MPLM parameter with its documented default (thesis Tables 4.1–4.3 where it gives
-// one; docs/mplm.md lists them all).
+// The MPLM parameters that do not depend on the lattice's dimension, with their documented
+// defaults (thesis Tables 4.1–4.3 where it gives one; docs/mplm.md lists them all). A
+// model of a given dimension adds its own (2d/parameters.hpp).
 #include <string>
 
 #include "engine/params.hpp"
 #include "models/mplm/common/damage.hpp"
-#include "models/mplm/2d/elastic_constants.hpp"
 
 namespace pdq::mplm {
 
 struct Parameters {
   // Lattice and concrete
   double s = 0.02;             // spacing (m)
-  double horizonFactor = 1.5;  // δ = 1.5 s: six neighbours
-  double thickness = 0.12;     // t (m)
+  double horizonFactor = 1.5;  // δ = 1.5 s: nearest neighbours only
   double E = 24.86e9, nu = 0.2, rho = 2323;
-  std::string elasticity = "plane_stress";  // plane_stress | plane_strain | given
-  ElasticConstants concrete;                // a, b in use
   std::string kinematics = "corotational";  // corotational | small
   // Damage
   bool damage = true;
   DamageLaw law;
+  double fractureEnergy = 0;  // G_F > 0: α_t follows from it (the lattice's form)
   // Steel (Table 4.3)
   double steelE = 200e9, steelRho = 7850, steelYield = 0.00207;
   // Multiplies the steel particles' rotational inertia. A bar thicker than the spacing
@@ -45,8 +43,7 @@ struct Parameters {
 
   void read(const Params& p);
   double horizon() const { return horizonFactor * s; }
-  double concreteMass() const;          // ρ (√3/2) s² t
-  double steelMass(double area) const;  // ρ_s A_s s
+  double steelMass(double area) const;  // ρ_s A_s s: a bar segment of one spacing
   static double rotationalInertia(double m, double s) { return m * s * s / 10; }  // r = s/2
 };
 
