@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "engine/error.hpp"
@@ -81,6 +83,46 @@ FccBox makeFcc(const FccSpec& s, ParticleSet& out) {
     for (int c = 0; c < 3; ++c)
       out.alterRow(first + p)[s.velocityColumn + c] = v[3 * p + c] * scale;
   return box;
+}
+
+double closePackedLayerPitch(double s) { return std::sqrt(2.0 / 3.0) * s; }
+
+std::vector<std::array<double, 3>> closePackedBox(const ClosePacked& L,
+                                                  const std::array<double, 3>& size,
+                                                  const std::array<double, 3>& origin) {
+  const int a = L.bondAxis, z = L.stackAxis;
+  if (a < 0 || a > 2 || z < 0 || z > 2 || a == z)
+    throw std::invalid_argument("the bond axis and the stacking axis must be two different axes");
+  if (!(L.s > 0)) throw std::invalid_argument("the lattice spacing must be positive");
+  const int c = 3 - a - z;  // across the rows, within a layer
+  const double s = L.s, p = std::sqrt(3.0) / 2 * s, h = closePackedLayerPitch(s);
+  const char* names[3] = {"X", "Y", "Z"};
+  const double need[3] = {s, p, h};
+  const int axes[3] = {a, c, z};
+  for (int k = 0; k < 3; ++k)
+    if (!(size[axes[k]] + 1e-9 * s >= need[k]))
+      throw std::invalid_argument(
+          "the lattice does not fit the box: " + std::to_string(size[axes[k]]) + " m along " +
+          names[axes[k]] + " is less than the lattice's stride " + std::to_string(need[k]) +
+          " m there (two particles at least)");
+  const double tol = 1e-9 * s;
+  std::vector<std::array<double, 3>> pts;
+  for (long k = 0; k * h <= size[z] + tol; ++k) {
+    const int phase = static_cast<int>(k % 3);  // A, B, C
+    for (long r = 0; r * p + phase * p / 3 <= size[c] + tol; ++r) {
+      const double v = r * p + phase * p / 3;
+      double shift = (r % 2) * s / 2 + phase * s / 2;
+      if (shift >= s) shift -= s;
+      for (long i = 0; shift + i * s <= size[a] + tol; ++i) {
+        std::array<double, 3> q{};
+        q[a] = origin[a] + shift + i * s;
+        q[c] = origin[c] + v;
+        q[z] = origin[z] + k * h;
+        pts.push_back(q);
+      }
+    }
+  }
+  return pts;
 }
 
 }  // namespace pdq

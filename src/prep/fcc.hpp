@@ -1,6 +1,8 @@
 #pragma once
-// Face-centred cubic lattice generator (3D): nx x ny x nz cubic unit cells of four
-// particles each, optionally with random velocities for a target temperature.
+// Face-centred cubic lattices (3D). makeFcc: nx x ny x nz cubic unit cells of four
+// particles each, optionally with random velocities for a target temperature (molecular
+// dynamics). closePackedBox: the same lattice built as the MPLM thesis builds it, close-packed
+// layers stacked in ABC order, filling a box (lattice models of solids).
 //
 // Velocities come from a seeded 64-bit Mersenne Twister (its sequence is fixed by the C++
 // standard) through Box-Muller, so a seed gives the same lattice on every machine and
@@ -8,6 +10,7 @@
 // temperature 2 KE / (k_B (3N - 3)) is exactly the target (k_B = 1: reduced units).
 #include <array>
 #include <cstdint>
+#include <vector>
 
 #include "engine/particle_set.hpp"
 
@@ -33,5 +36,22 @@ struct FccBox {
 // are zero). Throws InputError for a non-positive size or density, or for a temperature
 // without a velocity column.
 FccBox makeFcc(const FccSpec& spec, ParticleSet& out);
+
+// The close-packed layer of the 2D hexagonal lattice (rows of particles at spacing s along
+// `bondAxis`, rows (√3/2)s apart, every other row shifted by s/2) stacked along `stackAxis`
+// at √(2/3)s, each layer shifted by s/2 along and (√3/6)s across its rows from the one
+// below (A, B, C, A, ...): the fcc lattice with 12 nearest neighbours at s and 6 second
+// nearest at √2 s. The points inside the box [origin, origin + size] (faces included up to
+// 1e-9 s), one at the origin, layer by layer, row by row. Throws std::invalid_argument
+// when the lattice does not fit the box: fewer than two particles along any direction.
+struct ClosePacked {
+  double s = 0;
+  int bondAxis = 0, stackAxis = 2;  // 0 = X, 1 = Y, 2 = Z; different
+};
+std::vector<std::array<double, 3>> closePackedBox(const ClosePacked& lattice,
+                                                  const std::array<double, 3>& size,
+                                                  const std::array<double, 3>& origin = {0, 0, 0});
+// Distance between close-packed layers, √(2/3) s.
+double closePackedLayerPitch(double s);
 
 }  // namespace pdq

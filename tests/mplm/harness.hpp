@@ -1,5 +1,5 @@
 #pragma once
-// Running mplm2d on a ParticleSet in a test, on whatever ranks the test runs on.
+// Running mplm2d (or mplm3d) on a ParticleSet in a test, on whatever ranks the test runs on.
 #include <map>
 #include <memory>
 #include <string>
@@ -18,8 +18,8 @@ inline Params params(const std::map<std::string, std::string>& kv) {
 }
 
 inline std::unique_ptr<Simulation> simulation(Comm& comm, const Params& p, ParticleSet ps,
-                                              long steps) {
-  auto model = ModelRegistry::create("mplm2d");
+                                              long steps, const std::string& modelName = "mplm2d") {
+  auto model = ModelRegistry::create(modelName);
   model->configure(p);
   p.checkAllUsed();
   RunConfig cfg;

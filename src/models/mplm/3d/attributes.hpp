@@ -1,0 +1,67 @@
+#pragma once
+// The attributes of a 3D MPLM particle and interaction, shared by the model and the
+// generators that fill a ParticleSet for it. Six degrees of freedom: the position and the
+// rotation vector θ (axis × angle, |θ| ≤ π) of the particle's triad.
+#include "engine/schema.hpp"
+
+namespace pdq::mplm3d {
+
+// Fixed attributes (never change; sent only when a ghost is created).
+enum Fixed {
+  FX_X = 0,
+  FX_Y,
+  FX_Z,           // reference position
+  MATERIAL,       // Material below
+  BAR,            // steel: which bar (particles of different bars never interact)
+  LINK,           // steel: 1 if bonded to the concrete around it (every other one)
+  AREA,           // steel: bar cross-section A_s (m²)
+  SECOND_MOMENT,  // steel: bar I_s (m⁴)
+  CONSTRAINT,     // bit mask of prescribed DOFs (Constraint)
+  LOAD_X,         // peak external force (N), then moment (N·m), on the particle
+  LOAD_Y,
+  LOAD_Z,
+  LOAD_MX,
+  LOAD_MY,
+  LOAD_MZ,
+  DISP_X,  // peak prescribed displacement (m), then rotation (rad), of constrained DOFs
+  DISP_Y,
+  DISP_Z,
+  DISP_RX,
+  DISP_RY,
+  DISP_RZ,
+  MONITOR,  // 1: part of the displacement reported in the history
+  N_FIXED
+};
+// Alterable attributes: everything a neighbour reads (damping needs the velocities).
+enum Alter { AX = 0, AY, AZ, VX, VY, VZ, RX, RY, RZ, WX, WY, WZ, N_ALTER };
+// Per-step scratch of owned particles: force, then moment.
+enum Integ { FORCE_X = 0, FORCE_Y, FORCE_Z, MOMENT_X, MOMENT_Y, MOMENT_Z, N_INTEG };
+// Per-interaction state (each interaction is stored on both particles and evolves alike).
+enum BondAttr { OMEGA_T = 0, OMEGA_C, PLASTIC, N_BOND };
+
+enum Material { CONCRETE = 0, STEEL = 1 };
+// Bits of CONSTRAINT: bit d (d = 0..5) prescribes DOF d (u_x, u_y, u_z, θ_x, θ_y, θ_z).
+// REST_Y: the particle rests on a bearing: it cannot go below its reference Y but may lift
+// off (unilateral support).
+enum Constraint {
+  FIX_X = 1,
+  FIX_Y = 2,
+  FIX_Z = 4,
+  FIX_RX = 8,
+  FIX_RY = 16,
+  FIX_RZ = 32,
+  FIX_ALL = 63,
+  REST_Y = 64
+};
+
+inline bool isSteel(const double* fixedRow) { return fixedRow[MATERIAL] == double(STEEL); }
+
+inline Schema schema() {
+  return Schema::make({"material", "bar", "link", "area", "second_moment", "constraint", "load_x",
+                       "load_y", "load_z", "load_mx", "load_my", "load_mz", "disp_x", "disp_y",
+                       "disp_z", "disp_rx", "disp_ry", "disp_rz", "monitor"},
+                      {"vx", "vy", "vz", "rx", "ry", "rz", "wx", "wy", "wz"},
+                      {"fx", "fy", "fz", "mx", "my", "mz"}, {"omega_t", "omega_c", "plastic"});
+}
+
+}  // namespace pdq::mplm3d

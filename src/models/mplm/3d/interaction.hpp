@@ -1,0 +1,161 @@
+#pragma once
+// One interaction ij of the 3D MPLM as particle i sees it: a 12 × 12 Euler–Bernoulli frame
+// element (u, v, w, θx, θy, θz at each end) in the interaction's local frame (e1 along the
+// chord): axial a/d, torsion c/d, and two bending planes with the 12b/d³, 6b/d², 4b/d,
+// 2b/d pattern of thesis eq. 4.3. Written so that i and j, each computing the interaction
+// from its own side, get the same bits for the shared quantities (stretch, curvatures,
+// damage): swapping the ends negates the chord, e1 and e2 exactly and keeps e3, and every
+// symmetric quantity is formed from commutative operations.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "models/mplm/3d/rotation.hpp"
+#include "models/mplm/common/damage.hpp"
+
+namespace pdq::mplm3d {
+
+// Concrete interactions damage; Elastic ones (steel–concrete links, concrete with damage
+// off) never do; Bar ones are steel, elastic–perfectly plastic in stretch.
+enum class Kind : std::uint8_t { Concrete, Elastic, Bar };
+
+struct Interaction {
+  std::int32_t j = 0;  // partner's local index
+  Kind kind = Kind::Concrete;
+  Vec r0{}, n0{};            // reference chord X_j − X_i and its direction
+  double L0 = 0, invL0 = 0;  // reference length d
+  double ka = 0;             // axial stiffness a/d (N/m)
+  double kb = 0;             // b/d: end moment M_i = kb (4θ̄_i + 2θ̄_j) in each bending plane
+  double kt = 0;             // c/d: torsional moment kt (θ̄x_j − θ̄x_i)
+  double c = 0, cr = 0;      // damping of relative velocity and angular velocity
+  double epsY = 0;           // bars: yield stretch F_y/E_s
+};
+
+// The reference frame (n0, e2, e3) of an interaction: e2 ⟂ n0 from the global axis along
+// which n0 has its smallest component (first such axis on ties), e3 = n0 × e2. Under
+// n0 → −n0: e2 → −e2 and e3 → e3, bit for bit.
+inline void referenceFrame(const Vec& n0, Vec& e2, Vec& e3) {
+  const double ax = std::fabs(n0[0]), ay = std::fabs(n0[1]), az = std::fabs(n0[2]);
+  const int k = (ax <= ay && ax <= az) ? 0 : (ay <= az ? 1 : 2);
+  Vec h{0, 0, 0};
+  h[k] = 1;
+  e2 = cross(n0, h);
+  const double inv = 1 / std::sqrt(dot(e2, e2));
+  e2 = {e2[0] * inv, e2[1] * inv, e2[2] * inv};
+  e3 = cross(n0, e2);
+}
+
+// Deformation of the interaction in its local frame: elongation, chord length, the end
+// rotations relative to the frame in local components (θ̄x torsion, θ̄y, θ̄z bending), and
+// the frame's rotation from the reference one (identity in the small form).
+struct Chord {
+  double da, invL;
+  Vec ti, tj;
+  Quat frame;
+  bool rotated;
+};
+
+// Small deformation: reference geometry, linearised stretch and chord rotation
+// φ = n0 × (u_j − u_i)/d; the end rotations are the rotation vectors minus φ.
+inline Chord smallChord(const Interaction& k, const Vec& d, const Vec& thi, const Vec& thj) {
+  const Vec phi = cross(k.n0, d);
+  Vec e2, e3;
+  referenceFrame(k.n0, e2, e3);
+  const Vec bi{thi[0] - phi[0] * k.invL0, thi[1] - phi[1] * k.invL0, thi[2] - phi[2] * k.invL0};
+  const Vec bj{thj[0] - phi[0] * k.invL0, thj[1] - phi[1] * k.invL0, thj[2] - phi[2] * k.invL0};
+  return {dot(d, k.n0),
+          k.invL0,
+          {dot(bi, k.n0), dot(bi, e2), dot(bi, e3)},
+          {dot(bj, k.n0), dot(bj, e2), dot(bj, e3)},
+          {1, 0, 0, 0},
+          false};
+}
+
+// Co-rotational (after Crisfield): the frame is the mean of the two end triads, turned by
+// the smallest rotation that lays its first axis on the current chord r; each end's
+// rotation relative to that frame bends and twists the element. Rigid motions of any size
+// thus give no force. qi, qj: the particles' orientations.
+inline Chord corotChord(const Interaction& k, const Vec& r, const Quat& qi, const Quat& qj) {
+  const double L = std::sqrt(dot(r, r)), invL = 1 / L;
+  // Mean triad: q and −q are one rotation, so add the pair on the same hemisphere.
+  const double sgn = qi.w * qj.w + qi.x * qj.x + qi.y * qj.y + qi.z * qj.z >= 0 ? 1.0 : -1.0;
+  const Quat qm =
+      normalised({qi.w + sgn * qj.w, qi.x + sgn * qj.x, qi.y + sgn * qj.y, qi.z + sgn * qj.z});
+  const Vec a = rotate(qm, k.n0);
+  const Vec e1{r[0] * invL, r[1] * invL, r[2] * invL};
+  const Vec ax = cross(a, e1);
+  const Quat qs = normalised({1 + dot(a, e1), ax[0], ax[1], ax[2]});
+  const Quat qb = mul(qs, qm);
+  const Quat qbc = conj(qb);
+  const Vec vi = logRot(mul(qbc, qi)), vj = logRot(mul(qbc, qj));
+  Vec e2, e3;
+  referenceFrame(k.n0, e2, e3);
+  return {L - k.L0,
+          invL,
+          {dot(vi, k.n0), dot(vi, e2), dot(vi, e3)},
+          {dot(vj, k.n0), dot(vj, e2), dot(vj, e3)},
+          qb,
+          true};
+}
+
+struct EndLoad {
+  Vec f, m;     // force and moment of the interaction on particle i
+  double keep;  // 1 − ω while the interaction carries axial force (damping follows it)
+};
+
+// The elastic force on i after damage, updating the interaction's state (ω_t, ω_c, plastic
+// stretch) in `state` when `update`; a null `state` gives the undamaged elastic interaction.
+inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::DamageLaw& law,
+                            double* state, bool update) {
+  const Vec& ti = ch.ti;
+  const Vec& tj = ch.tj;
+  const double epsA = ch.da * k.invL0;  // eq. 4.7
+  double axialKeep = 1, bendKeep = 1, stretch = ch.da;
+  if (state && k.kind == Kind::Concrete) {
+    // ε_mp± = ε_a ± β d ψ, ψ = √(ψx² + ψy² + ψz²) at the end where it is larger (eqs.
+    // 4.8–4.12): ψx = |θ̄x_j − θ̄x_i|/d, bending (2/d)|2θ̄_end + θ̄_other| in each plane.
+    const double px = tj[0] - ti[0];
+    const double yi = 2 * (2 * ti[1] + tj[1]), zi = 2 * (2 * ti[2] + tj[2]);
+    const double yj = 2 * (2 * tj[1] + ti[1]), zj = 2 * (2 * tj[2] + ti[2]);
+    const double psi = std::sqrt(px * px + std::max(yi * yi + zi * zi, yj * yj + zj * zj));
+    const double curv = law.beta * psi;
+    double omT = state[0], omC = state[1];
+    const double omega = law.update(epsA + curv, epsA - curv, omT, omC);
+    if (update) {
+      state[0] = omT;
+      state[1] = omC;
+    }
+    bendKeep = 1 - omega;  // eqs. 4.19, 4.20: shear, moments and torsion always
+    axialKeep = epsA >= 0 ? bendKeep : (law.crushing ? 1 - omC : 1.0);
+  } else if (state && k.kind == Kind::Bar) {
+    double plastic = state[2];
+    const double elastic = epsA - plastic;
+    if (elastic > k.epsY)
+      plastic = epsA - k.epsY;
+    else if (elastic < -k.epsY)
+      plastic = epsA + k.epsY;
+    if (update) state[2] = plastic;
+    stretch = ch.da - plastic * k.L0;
+  }
+  const double N = k.ka * stretch * axialKeep;  // tension positive: pulls i toward j
+  const double kb = k.kb * bendKeep;
+  const double Myi = kb * (4 * ti[1] + 2 * tj[1]), Myj = kb * (2 * ti[1] + 4 * tj[1]);
+  const double Mzi = kb * (4 * ti[2] + 2 * tj[2]), Mzj = kb * (2 * ti[2] + 4 * tj[2]);
+  const double T = k.kt * bendKeep * (tj[0] - ti[0]);
+  // Local components on i: force (N, −(Mz_i+Mz_j)/L, (My_i+My_j)/L), moment (T, −My_i, −Mz_i).
+  const double f2 = -(Mzi + Mzj) * ch.invL, f3 = (Myi + Myj) * ch.invL;
+  Vec e2, e3;
+  referenceFrame(k.n0, e2, e3);
+  Vec f, m;
+  for (int d = 0; d < 3; ++d) {
+    f[d] = N * k.n0[d] + f2 * e2[d] + f3 * e3[d];
+    m[d] = T * k.n0[d] - Myi * e2[d] - Mzi * e3[d];
+  }
+  if (ch.rotated) {
+    f = rotate(ch.frame, f);
+    m = rotate(ch.frame, m);
+  }
+  return {f, m, axialKeep};
+}
+
+}  // namespace pdq::mplm3d

@@ -1,0 +1,520 @@
+// The micropolar peridynamic lattice model in 3D (thesis §4.2, §4.4.7–4.4.9), registered as
+// "mplm3d": particles on the fcc lattice with six DOFs (u and the rotation vector θ),
+// interacting with their 12 nearest neighbours as 12 × 12 frame elements and with their 6
+// second-nearest through axial springs (models/mplm/3d/elastic_constants.hpp), damaged by
+// the laws of §4.3.2 shared with the 2D model, damped by eq. 4.21, reinforced by steel bars,
+// and integrated by velocity Verlet in its leapfrog form. Loads ramp linearly to a fraction
+// of the run and are then held, as in 2D.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <iomanip>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <stdexcept>
+
+#include "engine/error.hpp"
+#include "engine/model.hpp"
+#include "models/mplm/3d/attributes.hpp"
+#include "models/mplm/3d/elastic_constants.hpp"
+#include "models/mplm/3d/interaction.hpp"
+#include "models/mplm/common/parameters.hpp"
+
+namespace pdq::mplm3d {
+namespace {
+
+// Poisson's ratio of the bars, for their torsional stiffness G J = E I/(1+ν).
+constexpr double steelPoisson = 0.3;
+
+// A start vector that depends only on the particle's global ID and the DOF, so every
+// decomposition iterates the same vector.
+double startValue(Gid id, int dof) {
+  std::uint64_t z = static_cast<std::uint64_t>(id) * 6 + dof + 0x9e3779b97f4a7c15ULL;
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  z ^= z >> 31;
+  return static_cast<double>(z >> 11) * 0x1.0p-53 - 0.5;
+}
+
+Vec rowVec(const double* row, int first) { return {row[first], row[first + 1], row[first + 2]}; }
+
+class Mplm3d final : public Model {
+ public:
+  void configure(const Params& p) override {
+    for (const char* twoD : {"thickness", "elasticity", "micro_a", "micro_b", "fracture_energy"})
+      if (p.has(twoD)) {
+        const auto v = p.raw(twoD);
+        throw InputError(v->file.empty() ? p.owner() : v->file, v->line,
+                         std::string(twoD) +
+                             " is a parameter of the 2D model (mplm2d), not of "
+                             "mplm3d");
+      }
+    par_.read(p);
+    try {
+      k_ = isotropicFcc(par_.E, par_.nu, par_.s);
+    } catch (const std::domain_error& e) {
+      const auto v = p.raw("poisson_ratio");
+      throw InputError(v ? v->file : p.owner(), v ? v->line : 0, e.what());
+    }
+  }
+  Schema schema() const override { return mplm3d::schema(); }
+  double horizon() const override { return par_.horizon(); }
+
+  // Interactions in the reference configuration: concrete–concrete within δ (the 12 nearest
+  // and 6 second-nearest neighbours at δ = 1.5 s); steel–steel of the same bar within s; a
+  // linking steel particle with concrete within s (not at distance zero).
+  void setup(Context& ctx) override {
+    if (ctx.dim() != 3)
+      throw InputError("mplm3d", 0,
+                       "mplm3d needs a 3D problem (particles spread in X, Y and Z); for a 2D "
+                       "particle set use mplm2d");
+    Particles& P = ctx.particles;
+    for (std::size_t i = 0; i < P.owned(); ++i)
+      ctx.forEachNearby(i, [&](std::size_t j) {
+        if (j == i || !interacts(P.fixed(i), P.fixed(j))) return;
+        checkSpacing(P, i, j);
+        ctx.bonds.add(i, P.gid(j));
+      });
+    if (par_.dt > 0) ctx.setDt(par_.dt);
+  }
+
+  void prepare(Context& ctx) override {
+    Particles& P = ctx.particles;
+    const std::size_t n = P.owned();
+    mass_.resize(n);
+    inertia_.resize(n);
+    constraint_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      mass_[i] = massOf(P.fixed(i));
+      inertia_[i] = inertiaOf(P.fixed(i));
+      constraint_[i] = static_cast<int>(P.fixed(i)[CONSTRAINT]);
+    }
+    inter_.resize(ctx.bonds.count());
+    // Gershgorin bound of the largest eigenvalue of M⁻¹C, C the damping of eq. 4.21.
+    double gamma = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      double gt = 0, gr = 0;
+      for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
+        inter_[b] = makeInteraction(P, i, static_cast<std::size_t>(ctx.bonds.partner(b)));
+        gt += 2 * inter_[b].c;
+        gr += 2 * inter_[b].cr;
+      }
+      gamma = std::max({gamma, gt / mass_[i], gr / inertia_[i]});
+    }
+    omegaMax_ = highestFrequency(ctx);
+    const double c0 = std::sqrt(par_.E / par_.rho);
+    const double thesisDt = par_.s / (std::numbers::pi * c0);
+    // Leapfrog with damping γ is stable for Δt < (2/ω)(√(1+ζ²) − ζ), ζ = γ/(2ω); the bound
+    // takes the highest frequency and the largest damping together.
+    const double zm = ctx.max(gamma) / (2 * omegaMax_);
+    const double stable = 2 / omegaMax_ * (std::sqrt(1 + zm * zm) - zm);
+    if (!(par_.dt > 0)) ctx.setDt(par_.dtSafety * stable);
+    if (ctx.root())
+      ctx.log() << std::setprecision(4) << "mplm3d: highest frequency " << omegaMax_
+                << " rad/s, stable dt " << stable << " s, s/(pi c0) = " << thesisDt
+                << " s, using dt " << ctx.dt() << " s\n";
+  }
+
+  void force(Context& ctx) override {
+    Particles& P = ctx.particles;
+    Bonds& B = ctx.bonds;
+    const bool corot = par_.kinematics == "corotational";
+    const long n = static_cast<long>(P.owned());
+    if (corot) orientations(P);
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      const double* a = P.alter(i);
+      double f[6] = {0, 0, 0, 0, 0, 0};
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const Interaction& k = inter_[b];
+        const double* aj = P.alter(k.j);
+        const EndLoad e = load(k, a, aj, i, B.attr(b), true);
+        for (int d = 0; d < 3; ++d) {
+          f[d] += e.f[d] + e.keep * k.c * (aj[VX + d] - a[VX + d]);
+          f[3 + d] += e.m[d] + e.keep * k.cr * (aj[WX + d] - a[WX + d]);
+        }
+      }
+      std::copy_n(f, 6, P.integ(i));
+    }
+  }
+
+  // Leapfrog: v(n+½) = v(n−½) + a(n) Δt, x(n+1) = x(n) + v(n+½) Δt; likewise
+  // ω(n+½) = ω(n−½) + I⁻¹ M(n) Δt and the orientation turns by exp(ω(n+½) Δt)
+  // (models/mplm/3d/rotation.hpp). Constrained DOFs follow their prescribed (ramped) values.
+  void integrate(Context& ctx) override {
+    Particles& P = ctx.particles;
+    const double h = ctx.dt();
+    const double loadNow = par_.loadScale * ramp(ctx, ctx.step() - 1);
+    const double dispNext = par_.loadScale * ramp(ctx, ctx.step());
+    const bool held = ramp(ctx, ctx.step() - 1) >= 1;
+    if (held && par_.holdDampingRatio > 0 && holdViscous_ < 0) holdViscous_ = holdDamping(ctx);
+    const double viscous = par_.viscous + (held && holdViscous_ > 0 ? holdViscous_ : 0.0);
+    const long n = static_cast<long>(P.owned());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      double* a = P.alter(i);
+      const double* X = P.fixed(i);
+      const double* F = P.integ(i);
+      const int fix = constraint_[i];
+      for (int d = 0; d < 3; ++d) {
+        if (fix & (1 << d)) {
+          const double target = X[FX_X + d] + X[DISP_X + d] * dispNext;
+          a[VX + d] = (target - a[AX + d]) / h;
+          a[AX + d] = target;
+        } else {
+          const double acc =
+              (F[FORCE_X + d] + X[LOAD_X + d] * loadNow) / mass_[i] - viscous * a[VX + d];
+          a[VX + d] += acc * h;
+          a[AX + d] += a[VX + d] * h;
+        }
+      }
+      Vec turn{};
+      for (int d = 0; d < 3; ++d) {
+        if (fix & (8 << d)) {
+          a[WX + d] = 0;  // set below, after the free components turned the particle
+        } else {
+          const double acc =
+              (F[MOMENT_X + d] + X[LOAD_MX + d] * loadNow) / inertia_[i] - viscous * a[WX + d];
+          a[WX + d] += acc * h;
+        }
+        turn[d] = a[WX + d] * h;
+      }
+      const Vec th = logRot(mul(expRot(turn), expRot(rowVec(a, RX))));
+      for (int d = 0; d < 3; ++d) {
+        if (fix & (8 << d)) {
+          const double target = X[DISP_RX + d] * dispNext;
+          a[WX + d] = (target - a[RX + d]) / h;
+          a[RX + d] = target;
+        } else {
+          a[RX + d] = th[d];
+        }
+      }
+      if ((fix & (REST_Y | FIX_Y)) == REST_Y && a[AY] < X[FX_Y]) {
+        a[AY] = X[FX_Y];  // on the support: no penetration, no bounce
+        a[VY] = 0;
+      }
+    }
+  }
+
+  std::vector<std::string> fields() const override {
+    return {"damage", "omega_t", "omega_c", "ux",  "uy",  "uz",  "rx", "ry",
+            "rz",     "sxx",     "syy",     "szz", "syz", "sxz", "sxy"};
+  }
+  void field(const Context& ctx, int k, std::span<double> out) const override {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    if (k >= 9 && par_.kinematics == "corotational") orientations(P);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+      const double* a = P.alter(i);
+      const double* X = P.fixed(i);
+      double v = 0;
+      if (k <= 2) {
+        for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+          const double* s = B.attr(b);
+          v = std::max(v, k == 0 ? std::max(s[OMEGA_T], s[OMEGA_C]) : s[k - 1]);
+        }
+      } else if (k <= 5) {
+        v = a[AX + k - 3] - X[FX_X + k - 3];
+      } else if (k <= 8) {
+        v = a[RX + k - 6];
+      } else {
+        v = stress(ctx, i)[k - 9];
+      }
+      out[i] = v;
+    }
+  }
+
+  std::vector<std::string> globals() const override {
+    return {"load_factor", "load_x",     "load_y",     "load_z",  "ux",      "uy",    "uz",
+            "reaction_x",  "reaction_y", "reaction_z", "kinetic", "damaged", "broken"};
+  }
+  std::vector<double> globalValues(Context& ctx) override {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    const double lf = par_.loadScale * ramp(ctx, ctx.step());
+    auto sum = [&](auto f) { return ctx.sumOwned(f); };
+    const double nMon = sum([&](std::size_t i) { return P.fixed(i)[MONITOR]; });
+    const double mean = nMon > 0 ? 1 / nMon : 0.0;
+    auto monitored = [&](std::size_t i, double v) { return P.fixed(i)[MONITOR] != 0 ? v : 0.0; };
+    std::vector<double> out{lf};
+    for (int d = 0; d < 3; ++d)
+      out.push_back(lf * sum([&](std::size_t i) { return P.fixed(i)[LOAD_X + d]; }));
+    for (int d = 0; d < 3; ++d)
+      out.push_back(mean * sum([&](std::size_t i) {
+                      return monitored(i, P.alter(i)[AX + d] - P.fixed(i)[FX_X + d]);
+                    }));
+    // A resting particle is pushed by its support while it sits on it.
+    for (int d = 0; d < 3; ++d)
+      out.push_back(sum([&](std::size_t i) {
+        const bool resting = d == 1 && (constraint_[i] & REST_Y) &&
+                             P.alter(i)[AY] <= P.fixed(i)[FX_Y] && P.integ(i)[FORCE_Y] < 0;
+        return (constraint_[i] & (1 << d)) || resting ? monitored(i, -P.integ(i)[FORCE_X + d])
+                                                      : 0.0;
+      }));
+    out.push_back(sum([&](std::size_t i) {
+      const double* a = P.alter(i);
+      return 0.5 * mass_[i] * (a[VX] * a[VX] + a[VY] * a[VY] + a[VZ] * a[VZ]) +
+             0.5 * inertia_[i] * (a[WX] * a[WX] + a[WY] * a[WY] + a[WZ] * a[WZ]);
+    }));
+    auto countBonds = [&](double threshold) {
+      return sum([&](std::size_t i) {
+               double c = 0;
+               for (std::size_t b = B.begin(i); b < B.end(i); ++b)
+                 if (std::max(B.attr(b)[OMEGA_T], B.attr(b)[OMEGA_C]) >= threshold) c += 1;
+               return c;
+             }) /
+             2;
+    };
+    out.push_back(countBonds(std::numeric_limits<double>::min()));
+    out.push_back(countBonds(1.0));
+    return out;
+  }
+
+ private:
+  double massOf(const double* f) const {
+    return isSteel(f) ? par_.steelMass(f[AREA])
+                      : par_.rho * par_.s * par_.s * par_.s / std::sqrt(2.0);
+  }
+  double inertiaOf(const double* f) const {
+    return mplm::Parameters::rotationalInertia(massOf(f), par_.s) *
+           (isSteel(f) ? par_.steelRotaryScale : 1.0);
+  }
+  static double distance(const double* fi, const double* fj) {
+    const double dx = fj[FX_X] - fi[FX_X], dy = fj[FX_Y] - fi[FX_Y], dz = fj[FX_Z] - fi[FX_Z];
+    return std::sqrt(dx * dx + dy * dy + dz * dz);
+  }
+  // Concrete neighbours must sit at s or √2 s: masses and stiffnesses are those of the
+  // fcc lattice at the model's spacing.
+  void checkSpacing(const Particles& P, std::size_t i, std::size_t j) const {
+    const double *fi = P.fixed(i), *fj = P.fixed(j);
+    if (isSteel(fi) || isSteel(fj)) return;
+    const double d = distance(fi, fj), s = par_.s;
+    if (std::fabs(d - s) > 1e-3 * s && std::fabs(d - std::sqrt(2.0) * s) > 1e-3 * s) {
+      std::ostringstream why;
+      why << "concrete particles " << P.gid(i) << " and " << P.gid(j) << " are " << d
+          << " apart, but the model's fcc lattice at spacing " << s
+          << " has neighbours at s and sqrt(2) s only: set [model] spacing to the particles' "
+             "spacing";
+      throw InputError("mplm3d", 0, why.str());
+    }
+  }
+
+  bool interacts(const double* fi, const double* fj) const {
+    const double d = distance(fi, fj);
+    const double within = par_.s * (1 + 1e-6);
+    const bool si = isSteel(fi), sj = isSteel(fj);
+    if (!si && !sj) return d <= par_.horizon();
+    if (si && sj) return fi[BAR] == fj[BAR] && d <= within;
+    const double* steel = si ? fi : fj;
+    return steel[LINK] != 0 && d > 0 && d <= within;
+  }
+
+  Interaction makeInteraction(const Particles& P, std::size_t i, std::size_t j) const {
+    const double* fi = P.fixed(i);
+    const double* fj = P.fixed(j);
+    Interaction k;
+    k.j = static_cast<std::int32_t>(j);
+    k.r0 = {fj[FX_X] - fi[FX_X], fj[FX_Y] - fi[FX_Y], fj[FX_Z] - fi[FX_Z]};
+    k.L0 = std::sqrt(dot(k.r0, k.r0));
+    k.invL0 = 1 / k.L0;
+    k.n0 = {k.r0[0] * k.invL0, k.r0[1] * k.invL0, k.r0[2] * k.invL0};
+    const bool si = isSteel(fi), sj = isSteel(fj);
+    const double s = par_.s, L = k.L0;
+    if (si && sj) {
+      k.kind = Kind::Bar;
+      k.ka = par_.steelE * fi[AREA] / L;
+      k.kb = par_.steelE * fi[SECOND_MOMENT] / L;
+      k.kt = k.kb / (1 + steelPoisson);
+      k.epsY = par_.steelYield;
+    } else if (si || sj) {
+      // Steel–concrete links never damage (§4.4); stiffness as in 2D: "concrete" keeps a
+      // nearest-neighbour interaction's translational stiffness whatever the distance.
+      k.kind = Kind::Elastic;
+      const bool likeConcrete = par_.link == "concrete";
+      k.ka = likeConcrete ? k_.a / s : k_.a / L;
+      k.kb = likeConcrete ? k_.b * L * L / (s * s * s) : k_.b / L;
+      k.kt = likeConcrete ? k_.c * L * L / (s * s * s) : k_.c / L;
+    } else {
+      k.kind = par_.damage ? Kind::Concrete : Kind::Elastic;
+      const bool nearest = L < 1.2 * s;  // else second nearest, at √2 s: axial only
+      k.ka = (nearest ? k_.a : k_.a2) / L;
+      k.kb = nearest ? k_.b / L : 0.0;
+      k.kt = nearest ? k_.c / L : 0.0;
+    }
+    // Eq. 4.21 with ω_n = √(k/m) of the interaction, m the pair's harmonic mean mass;
+    // likewise for rotation with the bending stiffness 4b/d and the rotational inertia.
+    const double mi = massOf(fi), mj = massOf(fj);
+    const double m = 2 * mi * mj / (mi + mj);
+    const double Ii = inertiaOf(fi), Ij = inertiaOf(fj);
+    const double I = 2 * Ii * Ij / (Ii + Ij);
+    k.c = 2 * par_.zeta * std::sqrt(k.ka * m);
+    k.cr = 2 * par_.zetaRotation * std::sqrt(4 * k.kb * I);
+    return k;
+  }
+
+  // The elastic load of interaction k on particle i (alterable rows a, aj) in the model's
+  // kinematics; the orientations of the co-rotational form come from orientations().
+  EndLoad load(const Interaction& k, const double* a, const double* aj, std::size_t i,
+               double* state, bool update) const {
+    const Vec r{aj[AX] - a[AX], aj[AY] - a[AY], aj[AZ] - a[AZ]};
+    Chord ch;
+    if (par_.kinematics == "corotational") {
+      ch = corotChord(k, r, q_[i], q_[static_cast<std::size_t>(k.j)]);
+    } else {
+      const Vec d{r[0] - k.r0[0], r[1] - k.r0[1], r[2] - k.r0[2]};
+      ch = smallChord(k, d, rowVec(a, RX), rowVec(aj, RX));
+    }
+    return elasticForce(k, ch, par_.law, state, update);
+  }
+
+  // exp(θ) of every local particle (owned and ghosts), once per step.
+  void orientations(const Particles& P) const {
+    const long nl = static_cast<long>(P.local());
+    q_.resize(P.local());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < nl; ++i) q_[i] = expRot(rowVec(P.alter(i), RX));
+  }
+
+  // ω_max of the undamaged, undamped lattice by power iteration on M^(−½) K M^(−½) (K the
+  // small-deformation stiffness), the same on every decomposition. The velocity columns
+  // hold the iterate (so ghosts follow by refreshGhosts) and are restored afterwards.
+  double highestFrequency(Context& ctx) const {
+    Particles& P = ctx.particles;
+    const std::size_t n = P.owned();
+    constexpr int cols[6] = {VX, VY, VZ, WX, WY, WZ};
+    std::vector<double> saved(6 * n), w(6 * n), z(6 * n);
+    auto invSqrtMass = [&](std::size_t i, int d) {
+      return 1 / std::sqrt(d < 3 ? mass_[i] : inertia_[i]);
+    };
+    for (std::size_t i = 0; i < n; ++i)
+      for (int d = 0; d < 6; ++d) {
+        saved[6 * i + d] = P.alter(i)[cols[d]];
+        w[6 * i + d] = (constraint_[i] & (1 << d)) ? 0.0 : startValue(P.gid(i), d);
+      }
+    auto dot6 = [&](const std::vector<double>& u, const std::vector<double>& v) {
+      return ctx.sumOwned([&](std::size_t i) {
+        double s = 0;
+        for (int d = 0; d < 6; ++d) s += u[6 * i + d] * v[6 * i + d];
+        return s;
+      });
+    };
+    const double scale = std::sqrt(dot6(w, w));
+    for (double& v : w) v /= scale;
+    double lambda = 0;
+    for (int it = 0; it < par_.powerIterations; ++it) {
+      for (std::size_t i = 0; i < n; ++i)
+        for (int d = 0; d < 6; ++d) P.alter(i)[cols[d]] = w[6 * i + d] * invSqrtMass(i, d);
+      ctx.refreshGhosts({VX, VY, VZ, WX, WY, WZ});
+      for (std::size_t i = 0; i < n; ++i) {
+        const double* a = P.alter(i);
+        double f[6] = {0, 0, 0, 0, 0, 0};
+        for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
+          const Interaction& k = inter_[b];
+          const double* aj = P.alter(k.j);
+          const Vec d{aj[VX] - a[VX], aj[VY] - a[VY], aj[VZ] - a[VZ]};
+          const EndLoad e = elasticForce(k, smallChord(k, d, rowVec(a, WX), rowVec(aj, WX)),
+                                         par_.law, nullptr, false);
+          for (int c = 0; c < 3; ++c) {
+            f[c] += e.f[c];
+            f[3 + c] += e.m[c];
+          }
+        }
+        for (int d = 0; d < 6; ++d)
+          z[6 * i + d] = (constraint_[i] & (1 << d)) ? 0.0 : -f[d] * invSqrtMass(i, d);
+      }
+      lambda = dot6(w, z);
+      const double nz = std::sqrt(dot6(z, z));
+      if (!(nz > 0)) break;
+      for (std::size_t k = 0; k < w.size(); ++k) w[k] = z[k] / nz;
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      for (int d = 0; d < 6; ++d) P.alter(i)[cols[d]] = saved[6 * i + d];
+    ctx.refreshGhosts({VX, VY, VZ, WX, WY, WZ});
+    return std::sqrt(std::max(lambda, 0.0));
+  }
+
+  // 2 ζ_h ω₁, ω₁² = F·u / (u·M·u) the Rayleigh quotient of the current deflection under
+  // the held loads; 0 without loads.
+  double holdDamping(Context& ctx) const {
+    const Particles& P = ctx.particles;
+    const double work = ctx.sumOwned([&](std::size_t i) {
+      const double* X = P.fixed(i);
+      const double* a = P.alter(i);
+      double w = 0;
+      for (int d = 0; d < 3; ++d)
+        w += X[LOAD_X + d] * (a[AX + d] - X[FX_X + d]) + X[LOAD_MX + d] * a[RX + d];
+      return par_.loadScale * w;
+    });
+    const double inertia = ctx.sumOwned([&](std::size_t i) {
+      const double* X = P.fixed(i);
+      const double* a = P.alter(i);
+      double m = 0;
+      for (int d = 0; d < 3; ++d) {
+        const double u = a[AX + d] - X[FX_X + d];
+        m += mass_[i] * u * u + inertia_[i] * a[RX + d] * a[RX + d];
+      }
+      return m;
+    });
+    if (!(work > 0 && inertia > 0)) return 0;
+    const double omega1 = std::sqrt(work / inertia);
+    if (ctx.root())
+      ctx.log() << "mplm3d: loads held from step " << ctx.step() << "; Rayleigh frequency "
+                << omega1 << " rad/s, hold damping " << 2 * par_.holdDampingRatio * omega1
+                << " 1/s\n";
+    return 2 * par_.holdDampingRatio * omega1;
+  }
+
+  // Load factor at a step: linear up to rampFraction of the run, then held.
+  double ramp(const Context& ctx, long step) const {
+    const double rampSteps = par_.rampFraction * static_cast<double>(ctx.steps());
+    if (!(rampSteps > 0)) return 1.0;
+    return std::min(1.0, static_cast<double>(step) / rampSteps);
+  }
+
+  // Virial stress of particle i from its elastic interactions (no damping), with the
+  // orientations of the co-rotational form up to date:
+  // σ = (1/2ΔV) Σ_j r_ij ⊗ f_ij, symmetrised, ΔV = s³/√2 (a bar's A_s s); order xx, yy, zz,
+  // yz, xz, xy.
+  std::array<double, 6> stress(const Context& ctx, std::size_t i) const {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    const double* a = P.alter(i);
+    double s[3][3] = {};
+    for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+      const Interaction& k = inter_[b];
+      const double* aj = P.alter(k.j);
+      double state[N_BOND];
+      std::copy_n(B.attr(b), N_BOND, state);
+      const EndLoad e = load(k, a, aj, i, state, false);
+      for (int p = 0; p < 3; ++p)
+        for (int q = 0; q < 3; ++q) s[p][q] += (aj[AX + p] - a[AX + p]) * e.f[q];
+    }
+    const double V =
+        isSteel(P.fixed(i)) ? P.fixed(i)[AREA] * par_.s : par_.s * par_.s * par_.s / std::sqrt(2.0);
+    const double k = 1 / (2 * V);
+    return {k * s[0][0],
+            k * s[1][1],
+            k * s[2][2],
+            0.5 * k * (s[1][2] + s[2][1]),
+            0.5 * k * (s[0][2] + s[2][0]),
+            0.5 * k * (s[0][1] + s[1][0])};
+  }
+
+  mplm::Parameters par_;
+  ElasticConstants k_;
+  std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
+  mutable std::vector<Quat> q_;     // orientation per local particle (co-rotational form)
+  std::vector<double> mass_, inertia_;
+  std::vector<int> constraint_;
+  double omegaMax_ = 0;
+  double holdViscous_ = -1;  // hold-phase damping, once computed
+};
+
+PDQ_REGISTER_MODEL(Mplm3d, "mplm3d",
+                   "micropolar peridynamic lattice model, 3D fcc: six DOFs, concrete with damage, "
+                   "steel bars");
+
+}  // namespace
+}  // namespace pdq::mplm3d

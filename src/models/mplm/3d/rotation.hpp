@@ -1,0 +1,84 @@
+#pragma once
+// Finite rotations for the 3D MPLM. A particle's orientation is stored as its rotation
+// vector θ (three numbers, like the other DOFs: they travel in the halo, restart and output
+// as they are, and the small-deformation form uses them directly). Rotations are composed
+// through unit quaternions, never by adding rotation vectors: each step the particle turns
+// by exp(ω Δt) applied to exp(θ) and θ is read back with the logarithm, so rotations of any
+// size stay exact rotations (no drift off the rotation group, no gimbal lock) and θ stays in
+// |θ| ≤ π. Particles are spheres (isotropic inertia), so ω needs no gyroscopic term.
+#include <array>
+#include <cmath>
+
+namespace pdq::mplm3d {
+
+using Vec = std::array<double, 3>;
+struct Quat {
+  double w, x, y, z;
+};
+
+inline double dot(const Vec& a, const Vec& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec cross(const Vec& a, const Vec& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
+inline Quat mul(const Quat& a, const Quat& b) {
+  return {
+      a.w * b.w - a.x * b.x - a.y * b.y - a.z * b.z, a.w * b.x + a.x * b.w + a.y * b.z - a.z * b.y,
+      a.w * b.y - a.x * b.z + a.y * b.w + a.z * b.x, a.w * b.z + a.x * b.y - a.y * b.x + a.z * b.w};
+}
+inline Quat conj(const Quat& q) { return {q.w, -q.x, -q.y, -q.z}; }
+
+// R(q) v for a unit quaternion: v + 2w (u × v) + 2 u × (u × v).
+inline Vec rotate(const Quat& q, const Vec& v) {
+  const Vec u{q.x, q.y, q.z};
+  const Vec t = cross(u, v);
+  const Vec tt = cross(u, t);
+  return {v[0] + 2 * (q.w * t[0] + tt[0]), v[1] + 2 * (q.w * t[1] + tt[1]),
+          v[2] + 2 * (q.w * t[2] + tt[2])};
+}
+
+// The unit quaternion of rotation vector θ. Small angles (|θ|/2 ≤ 0.1, the common case):
+// Taylor series of cos and sin(x)/x, exact to round-off there and cheaper than sin and cos.
+inline Quat expRot(const Vec& th) {
+  const double t2 = 0.25 * dot(th, th);  // (|θ|/2)²
+  double c, sx;                          // cos(|θ|/2), sin(|θ|/2)/(|θ|/2)
+  if (t2 <= 0.01) {
+    c = 1 - t2 * (1.0 / 2 -
+                  t2 * (1.0 / 24 - t2 * (1.0 / 720 - t2 * (1.0 / 40320 - t2 * (1.0 / 3628800)))));
+    sx = 1 - t2 * (1.0 / 6 - t2 * (1.0 / 120 - t2 * (1.0 / 5040 -
+                                                     t2 * (1.0 / 362880 - t2 * (1.0 / 39916800)))));
+  } else {
+    const double h = std::sqrt(t2);
+    c = std::cos(h);
+    sx = std::sin(h) / h;
+  }
+  const double k = 0.5 * sx;
+  return {c, k * th[0], k * th[1], k * th[2]};
+}
+
+// The rotation vector of a unit quaternion, |θ| ≤ π (q and −q are the same rotation).
+// Near the identity (|u|/w ≤ 0.1): θ = 2 u atan(t)/t with t = |u|/w, by its series.
+inline Vec logRot(Quat q) {
+  if (q.w < 0) q = {-q.w, -q.x, -q.y, -q.z};
+  const double u2 = q.x * q.x + q.y * q.y + q.z * q.z;
+  double k;  // θ = k u
+  if (u2 <= 0.01 * q.w * q.w) {
+    const double t2 = u2 / (q.w * q.w);
+    k = 2 / q.w *
+        (1 - t2 * (1.0 / 3 -
+                   t2 * (1.0 / 5 -
+                         t2 * (1.0 / 7 -
+                               t2 * (1.0 / 9 - t2 * (1.0 / 11 - t2 * (1.0 / 13 - t2 / 15)))))));
+  } else {
+    const double u = std::sqrt(u2);
+    k = 2 * std::atan2(u, q.w) / u;
+  }
+  return {k * q.x, k * q.y, k * q.z};
+}
+
+inline Quat normalised(const Quat& q) {
+  const double inv = 1 / std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
+  return {q.w * inv, q.x * inv, q.y * inv, q.z * inv};
+}
+
+}  // namespace pdq::mplm3d
