@@ -12,12 +12,11 @@
 
 #include "models/mplm/3d/rotation.hpp"
 #include "models/mplm/common/damage.hpp"
+#include "models/mplm/common/interactions.hpp"
 
 namespace pdq::mplm3d {
 
-// Concrete interactions damage; Elastic ones (steel–concrete links, concrete with damage
-// off) never do; Bar ones are steel, elastic–perfectly plastic in stretch.
-enum class Kind : std::uint8_t { Concrete, Elastic, Bar };
+using mplm::Kind;
 
 struct Interaction {
   std::int32_t j = 0;  // partner's local index
@@ -128,12 +127,7 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::D
     bendKeep = 1 - omega;  // eqs. 4.19, 4.20: shear, moments and torsion always
     axialKeep = epsA >= 0 ? bendKeep : (law.crushing ? 1 - omC : 1.0);
   } else if (state && k.kind == Kind::Bar) {
-    double plastic = state[2];
-    const double elastic = epsA - plastic;
-    if (elastic > k.epsY)
-      plastic = epsA - k.epsY;
-    else if (elastic < -k.epsY)
-      plastic = epsA + k.epsY;
+    const double plastic = mplm::plasticStrain(epsA, state[2], k.epsY);
     if (update) state[2] = plastic;
     stretch = ch.da - plastic * k.L0;
   }

@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
 #include <iomanip>
 #include <limits>
 #include <numbers>
@@ -20,6 +19,8 @@
 #include "models/mplm/3d/attributes.hpp"
 #include "models/mplm/3d/elastic_constants.hpp"
 #include "models/mplm/3d/interaction.hpp"
+#include "models/mplm/common/frequency.hpp"
+#include "models/mplm/common/interactions.hpp"
 #include "models/mplm/common/parameters.hpp"
 
 namespace pdq::mplm3d {
@@ -28,30 +29,15 @@ namespace {
 // Poisson's ratio of the bars, for their torsional stiffness G J = E I/(1+ν).
 constexpr double steelPoisson = 0.3;
 
-// A start vector that depends only on the particle's global ID and the DOF, so every
-// decomposition iterates the same vector.
-double startValue(Gid id, int dof) {
-  std::uint64_t z = static_cast<std::uint64_t>(id) * 6 + dof + 0x9e3779b97f4a7c15ULL;
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  z ^= z >> 31;
-  return static_cast<double>(z >> 11) * 0x1.0p-53 - 0.5;
-}
-
 Vec rowVec(const double* row, int first) { return {row[first], row[first + 1], row[first + 2]}; }
 
 class Mplm3d final : public Model {
  public:
   void configure(const Params& p) override {
-    for (const char* twoD : {"thickness", "elasticity", "micro_a", "micro_b", "fracture_energy"})
-      if (p.has(twoD)) {
-        const auto v = p.raw(twoD);
-        throw InputError(v->file.empty() ? p.owner() : v->file, v->line,
-                         std::string(twoD) +
-                             " is a parameter of the 2D model (mplm2d), not of "
-                             "mplm3d");
-      }
     par_.read(p);
+    if (par_.fractureEnergy > 0)
+      throw InputError(p.owner(), 0,
+                       "fracture_energy is not available in 3D: give tensile_ratio (alpha_t)");
     try {
       k_ = isotropicFcc(par_.E, par_.nu, par_.s);
     } catch (const std::domain_error& e) {
@@ -109,7 +95,7 @@ class Mplm3d final : public Model {
     // Leapfrog with damping γ is stable for Δt < (2/ω)(√(1+ζ²) − ζ), ζ = γ/(2ω); the bound
     // takes the highest frequency and the largest damping together.
     const double zm = ctx.max(gamma) / (2 * omegaMax_);
-    const double stable = 2 / omegaMax_ * (std::sqrt(1 + zm * zm) - zm);
+    const double stable = mplm::stableStep(omegaMax_, zm);
     if (!(par_.dt > 0)) ctx.setDt(par_.dtSafety * stable);
     if (ctx.root())
       ctx.log() << std::setprecision(4) << "mplm3d: highest frequency " << omegaMax_
@@ -302,13 +288,8 @@ class Mplm3d final : public Model {
   }
 
   bool interacts(const double* fi, const double* fj) const {
-    const double d = distance(fi, fj);
-    const double within = par_.s * (1 + 1e-6);
-    const bool si = isSteel(fi), sj = isSteel(fj);
-    if (!si && !sj) return d <= par_.horizon();
-    if (si && sj) return fi[BAR] == fj[BAR] && d <= within;
-    const double* steel = si ? fi : fj;
-    return steel[LINK] != 0 && d > 0 && d <= within;
+    auto end = [](const double* f) { return mplm::End{isSteel(f), f[BAR], f[LINK] != 0}; };
+    return mplm::interacts(end(fi), end(fj), distance(fi, fj), par_.horizon(), par_.s);
   }
 
   Interaction makeInteraction(const Particles& P, std::size_t i, std::size_t j) const {
@@ -320,37 +301,25 @@ class Mplm3d final : public Model {
     k.L0 = std::sqrt(dot(k.r0, k.r0));
     k.invL0 = 1 / k.L0;
     k.n0 = {k.r0[0] * k.invL0, k.r0[1] * k.invL0, k.r0[2] * k.invL0};
-    const bool si = isSteel(fi), sj = isSteel(fj);
     const double s = par_.s, L = k.L0;
-    if (si && sj) {
-      k.kind = Kind::Bar;
+    k.kind = mplm::kindOf(isSteel(fi), isSteel(fj), par_.damage);
+    if (k.kind == Kind::Bar) {
       k.ka = par_.steelE * fi[AREA] / L;
       k.kb = par_.steelE * fi[SECOND_MOMENT] / L;
       k.kt = k.kb / (1 + steelPoisson);
       k.epsY = par_.steelYield;
-    } else if (si || sj) {
-      // Steel–concrete links never damage (§4.4); stiffness as in 2D: "concrete" keeps a
-      // nearest-neighbour interaction's translational stiffness whatever the distance.
-      k.kind = Kind::Elastic;
-      const bool likeConcrete = par_.link == "concrete";
-      k.ka = likeConcrete ? k_.a / s : k_.a / L;
-      k.kb = likeConcrete ? k_.b * L * L / (s * s * s) : k_.b / L;
-      k.kt = likeConcrete ? k_.c * L * L / (s * s * s) : k_.c / L;
+    } else if (isSteel(fi) || isSteel(fj)) {
+      k.ka = mplm::linkAxial(par_.link, k_.a, s, L);
+      k.kb = mplm::linkBending(par_.link, k_.b, s, L);
+      k.kt = mplm::linkBending(par_.link, k_.c, s, L);
     } else {
-      k.kind = par_.damage ? Kind::Concrete : Kind::Elastic;
       const bool nearest = L < 1.2 * s;  // else second nearest, at √2 s: axial only
       k.ka = (nearest ? k_.a : k_.a2) / L;
       k.kb = nearest ? k_.b / L : 0.0;
       k.kt = nearest ? k_.c / L : 0.0;
     }
-    // Eq. 4.21 with ω_n = √(k/m) of the interaction, m the pair's harmonic mean mass;
-    // likewise for rotation with the bending stiffness 4b/d and the rotational inertia.
-    const double mi = massOf(fi), mj = massOf(fj);
-    const double m = 2 * mi * mj / (mi + mj);
-    const double Ii = inertiaOf(fi), Ij = inertiaOf(fj);
-    const double I = 2 * Ii * Ij / (Ii + Ij);
-    k.c = 2 * par_.zeta * std::sqrt(k.ka * m);
-    k.cr = 2 * par_.zetaRotation * std::sqrt(4 * k.kb * I);
+    k.c = mplm::dampingCoefficient(par_.zeta, k.ka, massOf(fi), massOf(fj));
+    k.cr = mplm::dampingCoefficient(par_.zetaRotation, 4 * k.kb, inertiaOf(fi), inertiaOf(fj));
     return k;
   }
 
@@ -377,62 +346,37 @@ class Mplm3d final : public Model {
     for (long i = 0; i < nl; ++i) q_[i] = expRot(rowVec(P.alter(i), RX));
   }
 
-  // ω_max of the undamaged, undamped lattice by power iteration on M^(−½) K M^(−½) (K the
-  // small-deformation stiffness), the same on every decomposition. The velocity columns
-  // hold the iterate (so ghosts follow by refreshGhosts) and are restored afterwards.
+  // ω_max of the undamaged lattice in small deformation, six DOFs per particle.
   double highestFrequency(Context& ctx) const {
-    Particles& P = ctx.particles;
-    const std::size_t n = P.owned();
-    constexpr int cols[6] = {VX, VY, VZ, WX, WY, WZ};
-    std::vector<double> saved(6 * n), w(6 * n), z(6 * n);
-    auto invSqrtMass = [&](std::size_t i, int d) {
-      return 1 / std::sqrt(d < 3 ? mass_[i] : inertia_[i]);
-    };
+    const std::size_t n = ctx.particles.owned();
+    mplm::DofSystem sys;
+    sys.dofs = 6;
+    sys.mass.resize(6 * n);
+    sys.held.resize(6 * n);
     for (std::size_t i = 0; i < n; ++i)
       for (int d = 0; d < 6; ++d) {
-        saved[6 * i + d] = P.alter(i)[cols[d]];
-        w[6 * i + d] = (constraint_[i] & (1 << d)) ? 0.0 : startValue(P.gid(i), d);
+        sys.mass[6 * i + d] = d < 3 ? mass_[i] : inertia_[i];
+        sys.held[6 * i + d] = (constraint_[i] & (1 << d)) != 0;
       }
-    auto dot6 = [&](const std::vector<double>& u, const std::vector<double>& v) {
-      return ctx.sumOwned([&](std::size_t i) {
-        double s = 0;
-        for (int d = 0; d < 6; ++d) s += u[6 * i + d] * v[6 * i + d];
-        return s;
-      });
-    };
-    const double scale = std::sqrt(dot6(w, w));
-    for (double& v : w) v /= scale;
-    double lambda = 0;
-    for (int it = 0; it < par_.powerIterations; ++it) {
-      for (std::size_t i = 0; i < n; ++i)
-        for (int d = 0; d < 6; ++d) P.alter(i)[cols[d]] = w[6 * i + d] * invSqrtMass(i, d);
-      ctx.refreshGhosts({VX, VY, VZ, WX, WY, WZ});
+    auto restoring = [&](std::span<const double> u, std::span<double> f) {
       for (std::size_t i = 0; i < n; ++i) {
-        const double* a = P.alter(i);
-        double f[6] = {0, 0, 0, 0, 0, 0};
+        double sum[6] = {0, 0, 0, 0, 0, 0};
+        const double* ui = &u[6 * i];
         for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
           const Interaction& k = inter_[b];
-          const double* aj = P.alter(k.j);
-          const Vec d{aj[VX] - a[VX], aj[VY] - a[VY], aj[VZ] - a[VZ]};
-          const EndLoad e = elasticForce(k, smallChord(k, d, rowVec(a, WX), rowVec(aj, WX)),
-                                         par_.law, nullptr, false);
+          const double* uj = &u[6 * static_cast<std::size_t>(k.j)];
+          const Vec d{uj[0] - ui[0], uj[1] - ui[1], uj[2] - ui[2]};
+          const EndLoad e = elasticForce(k, smallChord(k, d, rowVec(ui, 3), rowVec(uj, 3)),
+                                         mplm::DamageLaw{}, nullptr, false);
           for (int c = 0; c < 3; ++c) {
-            f[c] += e.f[c];
-            f[3 + c] += e.m[c];
+            sum[c] += e.f[c];
+            sum[3 + c] += e.m[c];
           }
         }
-        for (int d = 0; d < 6; ++d)
-          z[6 * i + d] = (constraint_[i] & (1 << d)) ? 0.0 : -f[d] * invSqrtMass(i, d);
+        std::copy_n(sum, 6, &f[6 * i]);
       }
-      lambda = dot6(w, z);
-      const double nz = std::sqrt(dot6(z, z));
-      if (!(nz > 0)) break;
-      for (std::size_t k = 0; k < w.size(); ++k) w[k] = z[k] / nz;
-    }
-    for (std::size_t i = 0; i < n; ++i)
-      for (int d = 0; d < 6; ++d) P.alter(i)[cols[d]] = saved[6 * i + d];
-    ctx.refreshGhosts({VX, VY, VZ, WX, WY, WZ});
-    return std::sqrt(std::max(lambda, 0.0));
+    };
+    return mplm::highestFrequency(ctx, sys, restoring, par_.powerIterations);
   }
 
   // 2 ζ_h ω₁, ω₁² = F·u / (u·M·u) the Rayleigh quotient of the current deflection under
