@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# make validate: the table of issue 4. Every 2D example of thesis §4.4 — the scenario files
+# make validate: the strength table of thesis §4.4. Every 2D example — the scenario files
 # examples/mplm/*.toml, as they are — through `pdq strength` (two trials side by side on
 # two ranks), printed as a Markdown table: the thesis's MPLM strength, the ACI 318 /
 # classical value, pdq's bracket, pdq / thesis and the failure mode. The lowest failing

@@ -49,7 +49,7 @@ void plotCommand(const PlotCommandOptions& o);
 
 struct StrengthCommandOptions {
   std::string input;
-  std::vector<std::string> set;  // key=value options of the model's strength driver
+  std::vector<std::string> set;  // key=value options of the strength search ([strength] keys)
 };
 void strengthCommand(const StrengthCommandOptions& o);
 

@@ -14,7 +14,6 @@
 #include "engine/error.hpp"
 #include "engine/model.hpp"
 #include "prep/generator.hpp"
-#include "studies/strength_registry.hpp"
 
 namespace {
 
@@ -59,10 +58,11 @@ void list() {
   std::printf("particle generators ([particles] generator = ...):\n");
   for (const auto& [name, what] : pdq::GeneratorRegistry::list())
     std::printf("  %-12s %s\n", name.c_str(), what.c_str());
-  std::printf("strength searches (pdq strength), by model:\n");
-  const auto drivers = pdq::StrengthRegistry::list();
-  if (drivers.empty()) std::printf("  (none)\n");
-  for (const auto& [name, what] : drivers) std::printf("  %-12s %s\n", name.c_str(), what.c_str());
+  std::printf("models with a strength spec (pdq strength):\n");
+  std::string withSpec;
+  for (const auto& [name, what] : pdq::ModelRegistry::list())
+    if (!pdq::ModelRegistry::create(name)->strengthSpec().load.empty()) withSpec += " " + name;
+  std::printf(" %s\n", withSpec.empty() ? " (none)" : withSpec.c_str());
 }
 
 }  // namespace
@@ -143,9 +143,9 @@ int main(int argc, char** argv) {
 
   StrengthCommandOptions strength;
   CLI::App* strengthCmd = app.add_subcommand(
-      "strength", "search the failure load of a scenario (models with a strength driver)");
+      "strength", "search the failure load of a scenario (models with a strength spec)");
   strengthCmd->add_option("input", strength.input, "scenario file or .dat folder")->required();
-  strengthCmd->add_option("--set", strength.set, "driver option key=value (repeatable)");
+  strengthCmd->add_option("--set", strength.set, "search option key=value (repeatable)");
   addPlugin(strengthCmd);
 
   InfoOptions info;
@@ -156,8 +156,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 10000000));
   addPlugin(infoCmd);
 
-  CLI::App* listCmd =
-      app.add_subcommand("list", "list the models, generators and strength searches");
+  CLI::App* listCmd = app.add_subcommand("list", "list the models and generators");
   addPlugin(listCmd);
 
   // An unknown command: say so with the nearest one, rather than CLI11's generic message.

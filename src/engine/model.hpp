@@ -27,6 +27,19 @@
 
 namespace pdq {
 
+// What `pdq strength` (src/studies/strength.hpp) needs of a model to search the load at
+// which a structure stops reaching static equilibrium: three of its globals by name and a
+// failure classifier. A model that declares these gets `pdq strength` with no code of its
+// own; one that leaves `load` empty has no strength search.
+struct StrengthSpec {
+  std::string load;                       // global: the load factor applied now
+  std::vector<std::string> displacement;  // globals: components of the monitored displacement
+  std::string damage;                     // global: the number of broken interactions
+  // How the structure failed ("tension", "shear", ...), judged from the state at the end of
+  // a trial; called on every rank alike (it may use the context's reductions).
+  std::function<std::string(Context&)> failureMode;
+};
+
 class Model {
  public:
   virtual ~Model() = default;
@@ -56,6 +69,9 @@ class Model {
   // every rank at output steps, so they may use the context's reductions.
   virtual std::vector<std::string> globals() const { return {}; }
   virtual std::vector<double> globalValues(Context&) { return {}; }
+  // Declared by models that support `pdq strength` (see StrengthSpec); the classifier may
+  // refer to this model, so the spec lives no longer than it.
+  virtual StrengthSpec strengthSpec() { return {}; }
 };
 
 using ModelFactory = std::function<std::unique_ptr<Model>()>;

@@ -1,6 +1,6 @@
 #pragma once
 // A table of named things that register themselves at load time (models, particle
-// generators, strength searches): one line at namespace scope in the file that defines the
+// generators): one line at namespace scope in the file that defines the
 // thing, through a macro such as PDQ_REGISTER_MODEL.
 //
 // A name is registered once. A second registration under the same name is refused (the

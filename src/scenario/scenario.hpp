@@ -9,7 +9,7 @@
 //     [decomposition]         procs, min_cell_size, margin, periodic, box_lo, box_hi, dimension
 //     [output]                dir, restart_every, history_every, history_ids, globals_every
 //     [output.paraview], [output.picture]
-//     [strength]              options of the model's strength search (pdq strength)
+//     [strength]              options of the strength search (pdq strength)
 //
 // Every value keeps its file and line; a key nobody reads is an error at its line with
 // the nearest known key suggested.
@@ -25,11 +25,11 @@ struct Scenario {
   // The model's parameters as written (for `pdq prep`, which writes pdQUserInput.dat).
   Params modelParams{"[model]"};
   // The generator that made the particles and its [particles] parameters (empty when they
-  // came from files): a strength driver reads the specimen's geometry from them.
+  // came from files): the strength study reads the specimen's geometry from them.
   std::string generator;
   Params generatorParams{"[particles]"};
-  // The [strength] table: options of `pdq strength` (studies/strength_registry.hpp), checked by
-  // the model's strength driver; `--set` items override them.
+  // The [strength] table: options of `pdq strength` (studies/strength_study.hpp), checked
+  // there; `--set` items override them.
   Params strength{"[strength]"};
   // [strength.model]: model parameters for the search's trials only (e.g. a larger time
   // step by rotary-inertia scaling, which leaves statics unchanged).

@@ -4,14 +4,16 @@
 #include <cmath>
 #include <stdexcept>
 
-namespace pdq::mplm::aci318 {
+namespace pdq::aci318 {
 namespace {
 
 double sqrtFcMPa(double fc) { return std::sqrt(fc / 1e6) * 1e6; }  // √f'c in MPa, as Pa
 
 void check(const Section& s) {
-  if (!(s.b > 0 && s.d > 0 && s.h >= s.d && s.fc > 0 && s.fy > 0))
-    throw std::invalid_argument("ACI 318 section needs b > 0, 0 < d <= h, f'c > 0, f_y > 0");
+  if (!(s.b > 0 && s.d > 0 && s.h >= s.d && s.fc > 0 && s.fy > 0 && s.Es > 0))
+    throw std::invalid_argument(
+        "ACI 318 section needs b > 0, 0 < d <= h, f'c > 0, f_y > 0, E_s > 0");
+  if (s.Av > 0 && !(s.fyt > 0)) throw std::invalid_argument("ACI 318 stirrups need f_yt > 0");
 }
 
 }  // namespace
@@ -70,15 +72,9 @@ double uniformLoadFromShear(double V, double span, double d, bool atCriticalSect
   return V / (span / 2 - d);
 }
 
-double tipLoadFromMoment(double M, double length) { return M / length; }
-
 Capacity simplySupportedUniform(const Section& s, double span, bool atCriticalSection) {
   return {uniformLoadFromMoment(flexuralStrength(s), span),
           uniformLoadFromShear(shearStrength(s), span, s.d, atCriticalSection)};
 }
 
-Capacity cantileverTip(const Section& s, double length) {
-  return {tipLoadFromMoment(flexuralStrength(s), length), shearStrength(s)};
-}
-
-}  // namespace pdq::mplm::aci318
+}  // namespace pdq::aci318

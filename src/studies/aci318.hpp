@@ -1,21 +1,21 @@
 #pragma once
 // ACI 318-11 strengths of a rectangular reinforced concrete section, as the thesis compares
 // its MPLM results with (§4.4): flexure by the equivalent rectangular stress block, shear
-// as V_c + V_s, both nominal (no strength-reduction factor φ), converted into the load form
-// of the example (line load on a simply supported span, or tip load on a cantilever).
-// SI units throughout: m, m², Pa, N, N·m.
+// as V_c + V_s, both nominal (no strength-reduction factor φ), converted into a line load on
+// a simply supported span. SI units throughout: m, m², Pa, N, N·m. The materials come from
+// the scenario (studies/mplm_reference.hpp), so nothing here has a default strength.
 #include <string>
 
-namespace pdq::mplm::aci318 {
+namespace pdq::aci318 {
 
 struct Section {
   double b = 0, h = 0, d = 0;  // width, total depth, effective depth (to the steel centroid)
   double As = 0;               // tension steel area
-  double fc = 27.58e6;         // f'c
-  double fy = 414e6, Es = 200e9;
-  double Av = 0, sv = 0;  // stirrup area per spacing (all legs) and spacing; 0: none
-  double fyt = 414e6;     // stirrup yield strength
-  double lambda = 1;      // lightweight-concrete factor
+  double fc = 0;               // f'c
+  double fy = 0, Es = 0;       // steel yield strength and modulus
+  double Av = 0, sv = 0;       // stirrup area per spacing (all legs) and spacing; 0: none
+  double fyt = 0;              // stirrup yield strength
+  double lambda = 1;           // lightweight-concrete factor
 };
 
 // β₁ of §10.2.7.3: 0.85 up to 28 MPa, less 0.05 per 7 MPa above, not below 0.65.
@@ -37,8 +37,6 @@ double shearStrength(const Section& s);  // V_c + V_s
 // or at the support itself, w = 2V/L.
 double uniformLoadFromMoment(double M, double span);
 double uniformLoadFromShear(double V, double span, double d, bool atCriticalSection = true);
-// Tip load P (N) on a cantilever of length L: P = M/L, P = V.
-double tipLoadFromMoment(double M, double length);
 
 struct Capacity {
   double flexure = 0, shear = 0;  // in the load form (N/m or N)
@@ -46,6 +44,5 @@ struct Capacity {
   std::string mode() const { return flexure < shear ? "flexural" : "shear"; }
 };
 Capacity simplySupportedUniform(const Section& s, double span, bool atCriticalSection = true);
-Capacity cantileverTip(const Section& s, double length);
 
-}  // namespace pdq::mplm::aci318
+}  // namespace pdq::aci318

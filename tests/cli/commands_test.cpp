@@ -193,11 +193,11 @@ TEST(Cli, PostDrawsPicturesAndPlots) {
   EXPECT_FALSE(fs::exists(dir + "/two.png"));
 }
 
-TEST(Cli, StrengthWithoutADriverSaysSo) {
+TEST(Cli, StrengthWithoutAStrengthSpecSaysSo) {
   const std::string dir = freshDir("strength");
   const std::string sc = springCase(dir, 20);
   const auto r = runPdq({"strength", sc}, dir);
   EXPECT_EQ(r.code, 1);
-  EXPECT_THAT(r.err, HasSubstr("no strength driver is available for model 'spring'"));
+  EXPECT_THAT(r.err, HasSubstr("model spring declares no strength spec"));
   EXPECT_FALSE(fs::exists(dir + "/out"));
 }

@@ -1,5 +1,8 @@
-// ACI 318 strengths of the thesis's 2D beams against hand calculations (written out in the
-// comments) and against the values the thesis quotes.
+// ACI 318 strengths of the thesis's 2D beams, their sections and materials taken from the
+// example files (examples/mplm/*.toml) as `pdq strength` takes them, against hand
+// calculations (written out in the comments) and against the values the thesis quotes.
+// Materials from the model's defaults: f_t = E ε_t = 24.86e9 · 1.109e-4 = 2.756974 MPa,
+// f'c = 10 f_t = 27.56974 MPa, f_y = E_s ε_y = 200e9 · 0.00207 = 414 MPa.
 #include "studies/aci318.hpp"
 
 #include <gtest/gtest.h>
@@ -7,92 +10,130 @@
 #include <cmath>
 #include <numbers>
 
-namespace pdq::mplm::aci318 {
+#include "harness.hpp"
+#include "studies/mplm_reference.hpp"
+
+namespace pdq::aci318 {
 namespace {
 
-double barArea(double d) { return std::numbers::pi * d * d / 4; }
+// The section of an example beam and its span.
+struct Beam {
+  Section section;
+  double span = 0;
+  Reference reference;
+};
 
-// §4.4.3–4.4.6 section: b = 0.12 m, h = 0.26 m, bar centroid 0.02 m up: d = 0.24 m.
-Section thesisBeam(double bar, double stirrup) {
-  Section s;
-  s.b = 0.12;
-  s.h = 0.26;
-  s.d = 0.24;
-  s.As = barArea(bar);
-  if (stirrup > 0) {
-    s.Av = barArea(stirrup);  // one vertical bar per position in the 2D model
-    s.sv = 0.15;
-  }
-  return s;
+Beam beam(const std::string& name) {
+  const Scenario sc = mplm::test::example(name);
+  const mplm::BeamSpec spec = mplm::beamSpec(sc.generatorParams, sc.modelParams);
+  mplm::Parameters par;
+  par.read(sc.modelParams);
+  return {mplm::section(spec, par), spec.span, referenceFor(sc, sc.modelParams)};
+}
+
+TEST(Aci318, MaterialsFromTheModelsParameters) {
+  const Section s = beam("rc_beam").section;
+  EXPECT_NEAR(s.fc, 27.56974e6, 1);
+  EXPECT_NEAR(s.fy, 414e6, 1e-3);
+  EXPECT_NEAR(s.fyt, 414e6, 1e-3);
+  EXPECT_EQ(s.Es, 200e9);
+  // A scenario's own parameters change them.
+  Scenario sc = mplm::test::example("rc_beam");
+  sc.modelParams.set("tensile_strain", "2e-4");
+  sc.modelParams.set("steel_yield_strain", "0.0025");
+  mplm::Parameters par;
+  par.read(sc.modelParams);
+  const Section t = mplm::section(mplm::beamSpec(sc.generatorParams, sc.modelParams), par);
+  EXPECT_NEAR(t.fc, 10 * 24.86e9 * 2e-4, 1);
+  EXPECT_NEAR(t.fy, 500e6, 1e-3);
 }
 
 TEST(Aci318, PlainBeamCrackingLoad) {
-  // M_cr = f_t b h²/6 = 2.758e6 · 0.12 · 0.26² / 6 = 3728.8 N·m; w = 8 M / L² = 22.17 kN/m.
-  const double w = uniformLoadFromMoment(crackingMoment(2.758e6, 0.12, 0.26), 1.16);
-  EXPECT_NEAR(w, 22169, 5);
+  // M_cr = f_t b h²/6 = 2.756974e6 · 0.12 · 0.26² / 6 = 3727.4 N·m; w = 8 M / L² = 22.16 kN/m.
+  const Beam b = beam("plain_beam");
+  const double w = uniformLoadFromMoment(crackingMoment(2.756974e6, 0.12, 0.26), b.span);
+  EXPECT_NEAR(w, 22161, 5);
   EXPECT_NEAR(w, 22140, 0.005 * 22140);  // thesis: 22.14 kN/m
+  EXPECT_NEAR(b.reference.value, w / 1e3, 1e-9);
+  EXPECT_EQ(b.reference.label, "classical");
+  EXPECT_EQ(b.reference.mode, "cracking");
+  EXPECT_EQ(b.reference.unit, "kN/m");
 }
 
 TEST(Aci318, SinglyReinforcedBeamFlexure) {
   // A_s = π 0.0127²/4 = 1.26677e-4 m²; T = A_s f_y = 52444 N;
-  // a = T / (0.85 f'c b) = 52444 / 2.81316e6 = 0.018642 m (c = a/0.85 = 0.02193 m,
-  // ε_s = 0.003 (d − c)/c = 0.0298: yields); M_n = T (d − a/2) = 12098 N·m;
-  // w = 8 M_n / 1.16² = 71.93 kN/m.
-  const Section s = thesisBeam(0.0127, 0);
+  // a = T / (0.85 f'c b) = 52444 / 2.81211e6 = 0.018649 m (c = a/0.85 = 0.02194 m,
+  // ε_s = 0.003 (d − c)/c = 0.0298: yields); M_n = T (d − a/2) = 12097.6 N·m;
+  // w = 8 M_n / 1.16² = 71.92 kN/m.
+  const Beam b = beam("rc_beam");
+  const Section& s = b.section;
+  EXPECT_DOUBLE_EQ(s.b, 0.12);
+  EXPECT_DOUBLE_EQ(s.h, 0.26);
+  EXPECT_NEAR(s.d, 0.24, 1e-15);
+  EXPECT_NEAR(s.As, 1.26677e-4, 1e-9);
+  EXPECT_EQ(s.Av, 0);
   EXPECT_NEAR(beta1(s.fc), 0.85, 1e-12);
-  EXPECT_NEAR(beta1(s.fc) * neutralAxis(s), 0.018642, 1e-6);
-  EXPECT_NEAR(flexuralStrength(s), 12098, 1);
-  const Capacity c = simplySupportedUniform(s, 1.16);
-  EXPECT_NEAR(c.flexure, 71930, 10);
+  EXPECT_NEAR(beta1(s.fc) * neutralAxis(s), 0.018649, 1e-6);
+  EXPECT_NEAR(flexuralStrength(s), 12097.6, 1);
+  const Capacity c = simplySupportedUniform(s, b.span);
+  EXPECT_NEAR(c.flexure, 71924, 10);
   EXPECT_NEAR(c.flexure, 72240, 0.005 * 72240);  // thesis: 72.24 kN/m
+  EXPECT_EQ(b.reference.label, "ACI 318");
+  EXPECT_EQ(b.reference.mode, "flexural");
+  EXPECT_NEAR(b.reference.value, c.governing() / 1e3, 1e-9);
 }
 
 TEST(Aci318, ShearCriticalBeam) {
-  // 3.175 cm bar: A_s = 7.917e-4 m², T = 327.8 kN, a = 0.11651 m, M_n = 59.57 kN·m,
-  // w_flexure = 354.2 kN/m. Shear: V_c = 0.17 √27.58 · 0.12 · 0.24 MN = 25.71 kN;
-  // V_s = A_v f_y d / s = 7.854e-5 · 414e6 · 0.24 / 0.15 = 52.03 kN; V_n = 77.74 kN;
+  // 3.175 cm bar: A_s = 7.917e-4 m², T = 327.8 kN, a = 0.11656 m, M_n = 59.56 kN·m,
+  // w_flexure = 354.1 kN/m. Shear: V_c = 0.17 √27.570 · 0.12 · 0.24 MN = 25.71 kN;
+  // V_s = A_v f_y d / s = 7.854e-5 · 414e6 · 0.24 / 0.15 = 52.02 kN; V_n = 77.73 kN;
   // at d from the support w = V_n / (0.58 − 0.24) = 228.6 kN/m (2 V_n / L = 134.0 kN/m).
-  const Section s = thesisBeam(0.03175, 0.01);
-  EXPECT_NEAR(flexuralStrength(s), 59570, 10);
-  EXPECT_NEAR(concreteShear(s), 25713, 2);
-  EXPECT_NEAR(steelShear(s), 52026, 2);
-  const Capacity c = simplySupportedUniform(s, 1.16);
-  EXPECT_NEAR(c.flexure, 354150, 100);
-  EXPECT_NEAR(c.shear, 228640, 50);
+  const Beam b = beam("rc_beam_shear");
+  const Section& s = b.section;
+  EXPECT_NEAR(s.Av, 7.854e-5, 1e-8);
+  EXPECT_DOUBLE_EQ(s.sv, 0.15);
+  EXPECT_NEAR(flexuralStrength(s), 59564, 10);
+  EXPECT_NEAR(concreteShear(s), 25707, 2);
+  EXPECT_NEAR(steelShear(s), 52025, 2);
+  const Capacity c = simplySupportedUniform(s, b.span);
+  EXPECT_NEAR(c.flexure, 354124, 100);
+  EXPECT_NEAR(c.shear, 228624, 50);
   EXPECT_EQ(c.mode(), "shear");  // as the thesis says (it quotes 210 kN/m)
-  EXPECT_NEAR(simplySupportedUniform(s, 1.16, false).shear, 134040, 50);
+  EXPECT_NEAR(simplySupportedUniform(s, b.span, false).shear, 134021, 50);
+  EXPECT_EQ(b.reference.mode, "shear");
+  EXPECT_NEAR(b.reference.value, 228.624, 0.05);
 }
 
 TEST(Aci318, StirrupsDoNotChangeFlexuralFailure) {
-  const Capacity c = simplySupportedUniform(thesisBeam(0.0127, 0.01), 1.16);
+  const Beam b = beam("rc_beam_stirrups");
+  EXPECT_GT(b.section.Av, 0);
+  const Capacity c = simplySupportedUniform(b.section, b.span);
   EXPECT_EQ(c.mode(), "flexural");  // §4.4.5: bending failure, 72.24 kN/m
-  EXPECT_NEAR(c.governing(), 71930, 10);
+  EXPECT_NEAR(c.governing(), 71924, 10);
+  EXPECT_NEAR(b.reference.value, 71.924, 0.01);
 }
 
 TEST(Aci318, LargeBeamShear) {
   // 4.06 × 1.02 × 0.41 m, 10.16 cm bar at 5.1 cm (d = 0.969 m), 2.54 cm stirrups at 43.2 cm:
-  // V_c = 0.17 √27.58 · 0.41 · 0.969 MN = 354.7 kN; V_s = 5.067e-4 · 414e6 · 0.969/0.432
-  // = 470.6 kN; V_n = 825.3 kN; w = V_n / (2.03 − 0.969) = 777.9 kN/m. Flexure: a = 0.3492 m,
+  // V_c = 0.17 √27.570 · 0.41 · 0.969 MN = 354.6 kN; V_s = 5.067e-4 · 414e6 · 0.969/0.432
+  // = 470.5 kN; V_n = 825.2 kN; w = V_n / (2.03 − 0.969) = 777.7 kN/m. Flexure: a = 0.3493 m,
   // M_n = 2666 kN·m, w = 1294 kN/m, so shear governs (the thesis quotes 599 kN/m).
-  Section s;
-  s.b = 0.41;
-  s.h = 1.02;
-  s.d = 1.02 - 0.051;
-  s.As = barArea(0.1016);
-  s.Av = barArea(0.0254);
-  s.sv = 0.432;
-  const Capacity c = simplySupportedUniform(s, 4.06);
-  EXPECT_NEAR(concreteShear(s), 354690, 100);
-  EXPECT_NEAR(steelShear(s), 470640, 100);
-  EXPECT_NEAR(c.shear, 777900, 300);
-  EXPECT_NEAR(c.flexure, 1294000, 2000);
+  const Beam b = beam("deep_beam");
+  const Section& s = b.section;
+  EXPECT_NEAR(s.d, 0.969, 1e-12);
+  const Capacity c = simplySupportedUniform(s, b.span);
+  EXPECT_NEAR(concreteShear(s), 354628, 100);
+  EXPECT_NEAR(steelShear(s), 470541, 100);
+  EXPECT_NEAR(c.shear, 777728, 300);
+  EXPECT_NEAR(c.flexure, 1293951, 2000);
   EXPECT_EQ(c.mode(), "shear");
+  EXPECT_NEAR(b.reference.value, 777.728, 0.3);
 }
 
 TEST(Aci318, OverReinforcedSteelDoesNotYield) {
   // A_s = 0.01 m² in the 0.12 × 0.26 section: the steel stays elastic (f_s < f_y) and
   // the compression block balances E_s ε_s A_s.
-  Section s = thesisBeam(0.0127, 0);
+  Section s = beam("rc_beam").section;
   s.As = 0.01;
   const double c = neutralAxis(s);
   const double fs = s.Es * 0.003 * (s.d - c) / c;
@@ -100,5 +141,26 @@ TEST(Aci318, OverReinforcedSteelDoesNotYield) {
   EXPECT_NEAR(0.85 * s.fc * s.b * 0.85 * c, s.As * fs, 1e-6 * s.As * fs);
 }
 
+TEST(Aci318, PlatesAreComparedWithTheConcretesStrengths) {
+  for (const char* name : {"tension_x", "compression_y"}) {
+    const Scenario sc = mplm::test::example(name);
+    const Reference r = referenceFor(sc, sc.modelParams);
+    EXPECT_EQ(r.unit, "MPa");
+    EXPECT_EQ(r.unitLoad, 1);
+    const bool tension = std::string(name) == "tension_x";
+    EXPECT_EQ(r.mode, tension ? "tension" : "compression");
+    EXPECT_NEAR(r.value, tension ? 2.756974 : 27.56974, 1e-9);  // thesis: 2.758, 27.58 MPa
+  }
+}
+
+TEST(Aci318, ASectionWithoutMaterialsIsRefused) {
+  Section s;
+  s.b = 0.12;
+  s.h = 0.26;
+  s.d = 0.24;
+  s.As = 1e-4;
+  EXPECT_THROW(flexuralStrength(s), std::invalid_argument);
+}
+
 }  // namespace
-}  // namespace pdq::mplm::aci318
+}  // namespace pdq::aci318

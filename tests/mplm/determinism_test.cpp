@@ -9,8 +9,7 @@
 
 #include "harness.hpp"
 #include "models/mplm/2d/attributes.hpp"
-#include "prep/mplm/examples.hpp"
-#include "studies/mplm_strength.hpp"
+#include "prep/mplm/generators.hpp"
 
 namespace pdq::mplm {
 namespace {
@@ -20,13 +19,19 @@ struct State {
   std::map<std::pair<Gid, Gid>, std::vector<double>> bonds;  // (owner, partner) -> state
 };
 
-// Runs the example at `load` on `comm` and gathers the final state on the comm's rank 0.
-State runAndGather(const Example& ex, double load, MPI_Comm mpiComm) {
+// A specimen and the model's parameters, run for `steps`.
+struct Case {
+  ParticleSet particles;
+  Params params;
+  long steps = 0;
+};
+
+// Runs the case at `load` on `comm` and gathers the final state on the comm's rank 0.
+State runAndGather(const Case& c, double load, MPI_Comm mpiComm) {
   Comm comm(mpiComm);
-  Params p("test");
-  for (const auto& [k, v] : ex.params) p.set(k, v);
+  Params p = c.params;
   p.set("load_scale", std::to_string(load));
-  auto sim = test::simulation(comm, p, ex.particles, ex.steps);
+  auto sim = test::simulation(comm, p, c.particles, c.steps);
   sim->run();
   const Particles& P = sim->particles();
   const Bonds& B = sim->bonds();
@@ -71,16 +76,16 @@ bool sameBits(const std::vector<double>& a, const std::vector<double>& b) {
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
 }
 
-void checkDeterministic(const Example& ex, double load) {
+void checkDeterministic(const Case& c, double load) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
-  const State all = runAndGather(ex, load, MPI_COMM_WORLD);
+  const State all = runAndGather(c, load, MPI_COMM_WORLD);
   MPI_Comm single;
   MPI_Comm_split(MPI_COMM_WORLD, rank == 0 ? 0 : MPI_UNDEFINED, 0, &single);
   if (rank != 0) return;
-  const State one = runAndGather(ex, load, single);
+  const State one = runAndGather(c, load, single);
   MPI_Comm_free(&single);
-  ASSERT_EQ(all.particles.size(), ex.particles.size());
+  ASSERT_EQ(all.particles.size(), c.particles.size());
   ASSERT_EQ(one.particles.size(), all.particles.size());
   for (const auto& [gid, row] : all.particles)
     ASSERT_TRUE(sameBits(row, one.particles.at(gid))) << "particle " << gid;
@@ -97,9 +102,8 @@ void checkDeterministic(const Example& ex, double load) {
 }
 
 TEST(Determinism, CrackingPlateSameBitsOnOneAndAllRanks) {
-  Example ex = plate("x", false);
-  ex.steps = 4000;
-  checkDeterministic(ex, 3.5);
+  const Scenario sc = test::example("tension_x");
+  checkDeterministic({sc.problem.particles, sc.modelParams, 4000}, 3.5);
 }
 
 TEST(Determinism, ReinforcedBeamSameBitsOnOneAndAllRanks) {
@@ -110,9 +114,7 @@ TEST(Determinism, ReinforcedBeamSameBitsOnOneAndAllRanks) {
   b.stirrupDiameter = 0.006;
   b.stirrupFirst = 0.04;
   b.stirrupSpacing = 0.1;
-  Example ex = beam(b);
-  ex.steps = 3000;
-  checkDeterministic(ex, 200);
+  checkDeterministic({beam(b), test::params({}), 3000}, 200);
 }
 
 }  // namespace

@@ -1,15 +1,30 @@
 #pragma once
-// Running mplm2d (or mplm3d) on a ParticleSet in a test, on whatever ranks the test runs on.
+// Running mplm2d (or mplm3d) on a ParticleSet in a test, on whatever ranks the test runs on,
+// and the thesis's examples as the scenario files examples/mplm/*.toml give them.
+#include <cstdlib>
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "engine/comm.hpp"
 #include "engine/model.hpp"
 #include "engine/params.hpp"
 #include "engine/simulation.hpp"
+#include "scenario/scenario.hpp"
 
 namespace pdq::mplm::test {
+
+// The nine examples of thesis §4.4.1–4.4.6.
+inline const std::vector<std::string> examples = {
+    "tension_x", "tension_y",        "compression_x", "compression_y", "plain_beam",
+    "rc_beam",   "rc_beam_stirrups", "rc_beam_shear", "deep_beam"};
+
+// examples/mplm/<name>.toml, read by the scenario loader.
+inline Scenario example(const std::string& name) {
+  return readScenario(std::string(std::getenv("PDQ_SOURCE_DIR")) + "/examples/mplm/" + name +
+                      ".toml");
+}
 
 inline Params params(const std::map<std::string, std::string>& kv) {
   Params p("test");

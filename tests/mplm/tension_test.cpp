@@ -1,21 +1,25 @@
-// Fracture: the tension plate of §4.4.1 (vertical orientation, load across the bonds)
-// fails within 5% of f_t.
+// Fracture: the tension plate of §4.4.1 (examples/mplm/tension_x.toml: bonds along X, the
+// load across them) fails within 5% of f_t = E ε_t, found by the strength search.
 #include <gtest/gtest.h>
 
 #include "engine/comm.hpp"
-#include "prep/mplm/examples.hpp"
-#include "studies/mplm_strength.hpp"
+#include "harness.hpp"
+#include "models/mplm/common/parameters.hpp"
+#include "studies/strength_study.hpp"
 
 namespace pdq::mplm {
 namespace {
 
 TEST(Tension, PlateFailsAtTensileStrength) {
   Comm comm(MPI_COMM_WORLD);
-  const Example ex = plate("x", false);
-  StrengthOptions opt;
+  const Scenario sc = test::example("tension_x");
+  const strength::Case c = strengthCase(sc);
+  strength::Options opt;
   opt.relTol = 0.01;
-  const Strength st = findStrength(ex, 2.0, 4.0, comm, opt);
-  const double ft = 2.758, strength = 0.5 * (st.lower + st.upper);
+  const strength::Result st = strength::findStrength(c, 2.0, 4.0, comm, opt);
+  Parameters par;
+  par.read(sc.modelParams);
+  const double ft = par.E * par.law.epsT / 1e6, strength = 0.5 * (st.lower + st.upper);
   EXPECT_NEAR(strength, ft, 0.05 * ft) << "bracket [" << st.lower << ", " << st.upper << "]";
   EXPECT_LE(st.upper - st.lower, 0.01 * st.lower);
   EXPECT_EQ(st.mode, "tension");

@@ -1,13 +1,93 @@
 #include "prep/mplm/generators.hpp"
 
+#include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "engine/error.hpp"
 #include "models/mplm/2d/attributes.hpp"
 #include "models/mplm/2d/parameters.hpp"
 #include "prep/generator.hpp"
+#include "prep/hexagonal.hpp"
+#include "prep/mplm/specimen.hpp"
 
 namespace pdq::mplm {
+
+ParticleSet plate(const PlateSpec& spec) {
+  const double s = spec.spacing, t = spec.thickness;
+  const auto o = prep::hexOrientation(spec.orientation);
+  ParticleSet ps = newParticleSet();
+  addConcrete(ps, prep::hexagonalRectangle(spec.width, spec.height, s, o));
+  // Two layers at each end: rows (√3/2 s apart) or zig-zag layers (s/2 apart).
+  const double layer = o == prep::HexOrientation::BondsAlongX ? prep::hexPitch(s) : s / 2;
+  const double reach = 1.5 * layer;
+  const double yMax = maxCoord(ps, 1);
+  const auto top = select(ps, [&](const double* f) { return f[1] > yMax - reach; });
+  const auto bottom = select(ps, [&](const double* f) { return f[1] < reach; });
+  const double force = spec.stress * spec.width * t * (spec.compression ? -1 : 1);
+  if (spec.loaded && spec.traction) {
+    loadUniform(ps, top, 0, 0, spec.width, 0, force);
+    loadUniform(ps, bottom, 0, 0, spec.width, 0, -force);
+  } else if (spec.loaded) {
+    load(ps, top, 0, force / top.size());
+    load(ps, bottom, 0, -force / bottom.size());
+  }
+  monitor(ps, top);
+  return ps;
+}
+
+ParticleSet beam(const BeamSpec& b) {
+  const double s = b.spacing;
+  ParticleSet ps = newParticleSet();
+  addConcrete(ps, prep::hexagonalRectangle(b.span, b.depth, s, prep::HexOrientation::BondsAlongX));
+  int barId = 1;
+  if (b.barDiameter > 0)
+    addBar(ps, prep::longitudinalBar(0, b.span, 0, b.barCentroid, b.barDiameter), s, barId++);
+  if (b.stirrupDiameter > 0)
+    for (const auto& st : prep::stirrups(
+             b.stirrupFirst, b.stirrupSpacing, b.span - b.stirrupFirst + b.stirrupSpacing / 2,
+             b.barCentroid, b.depth - b.stirrupCover, b.stirrupDiameter))
+      addBar(ps, st, s, barId++);
+  const double tol = 1e-6 * s;
+  const double yTop = maxCoord(ps, 1);
+  auto concreteAt = [&](double x, double y) {
+    return select(ps, [=](const double* f) {
+      return isConcrete(f) && std::fabs(f[0] - x) < tol && std::fabs(f[1] - y) < tol;
+    });
+  };
+  if (concreteAt(0, 0).size() != 1 || concreteAt(b.span, 0).size() != 1) {
+    char why[160];
+    std::snprintf(why, sizeof why,
+                  "the span %.17g is not a whole number of spacings: no lattice particle at the "
+                  "bottom-right corner to support",
+                  b.span);
+    throw std::invalid_argument(why);
+  }
+  if (b.supports != "none") {
+    const auto left = select(ps, [&](const double* f) {
+      return isConcrete(f) && f[1] < tol && f[0] <= b.supportWidth + tol;
+    });
+    const auto right = select(ps, [&](const double* f) {
+      return isConcrete(f) && f[1] < tol && f[0] >= b.span - b.supportWidth - tol;
+    });
+    if (b.supports == "bearings") {
+      constrain(ps, left, REST_Y);
+      constrain(ps, concreteAt(0, 0), FIX_X);
+      constrain(ps, right, REST_Y);
+    } else {
+      constrain(ps, left, FIX_X | FIX_Y);
+      constrain(ps, right, FIX_Y);
+    }
+  }
+  const auto top = select(ps, [&](const double* f) { return isConcrete(f) && f[1] > yTop - tol; });
+  if (b.lineLoad != 0) loadUniform(ps, top, 0, 0, b.span, 0, -b.lineLoad * b.span);
+  const auto mid = select(ps, [&](const double* f) {
+    return isConcrete(f) && f[1] < tol && std::fabs(f[0] - b.span / 2) <= s / 2 + tol;
+  });
+  monitor(ps, mid);
+  return ps;
+}
+
 namespace {
 
 constexpr double big = 1e300;
@@ -24,11 +104,11 @@ Parameters2d modelParameters(const Params& model) {
   throw InputError(g ? g->file : p.owner(), g ? g->line : 0, why);
 }
 
-Generated generated(Example ex, const Params& p, const Schema& schema) {
+Generated generated(ParticleSet ps, const Params& p, const Schema& schema) {
   if (schema.nFixed() != N_FIXED || schema.nAlter() != N_ALTER)
     fail(p, "this generator makes MPLM particles; use it with model mplm2d");
   Generated g;
-  g.particles = std::move(ex.particles);
+  g.particles = std::move(ps);
   return g;
 }
 

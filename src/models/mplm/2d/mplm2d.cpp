@@ -183,6 +183,12 @@ class Mplm2d final : public Model {
     }
   }
 
+  // pdq strength: the load factor, the monitored displacement and the broken interactions.
+  StrengthSpec strengthSpec() override {
+    return {
+        "load_factor", {"ux", "uy"}, "broken", [this](Context& ctx) { return failureMode(ctx); }};
+  }
+
   std::vector<std::string> globals() const override {
     return {"load_factor", "load_x",     "load_y",  "ux",      "uy",
             "reaction_x",  "reaction_y", "kinetic", "damaged", "broken"};
@@ -352,6 +358,41 @@ class Mplm2d final : public Model {
                 << omega1 << " rad/s, hold damping " << 2 * par_.holdDampingRatio * omega1
                 << " 1/s\n";
     return 2 * par_.holdDampingRatio * omega1;
+  }
+
+  // Where the badly damaged (ω ≥ ½) concrete interactions are: mostly compressive →
+  // "compression"; without supports (a plate loaded at both ends) → "tension"; else a
+  // beam: "flexural" when most lie in the middle third between its supports, else "shear".
+  std::string failureMode(Context& ctx) const {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    double lo = std::numeric_limits<double>::max(), hi = -lo;
+    for (std::size_t i = 0; i < P.owned(); ++i)
+      if (in_.constraint[i] != 0) {
+        lo = std::min(lo, P.fixed(i)[FX_X]);
+        hi = std::max(hi, P.fixed(i)[FX_X]);
+      }
+    lo = ctx.min(lo);
+    hi = ctx.max(hi);
+    const bool supported = lo <= hi;
+    ExactSum tensile, compressive, middle, all;
+    for (std::size_t i = 0; i < P.owned(); ++i) {
+      if (isSteel(P.fixed(i))) continue;
+      const bool central = std::fabs(P.fixed(i)[FX_X] - (lo + hi) / 2) < (hi - lo) / 6;
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const double* st = B.attr(b);
+        if (std::max(st[OMEGA_T], st[OMEGA_C]) < 0.5) continue;
+        (st[OMEGA_C] >= st[OMEGA_T] ? compressive : tensile).add(1);
+        all.add(1);
+        if (supported && central) middle.add(1);
+      }
+    }
+    const double t = ctx.sum(tensile), c = ctx.sum(compressive), m = ctx.sum(middle);
+    const double total = ctx.sum(all);
+    if (total == 0) return "none";
+    if (c > t) return "compression";
+    if (!supported) return "tension";
+    return m > total / 2 ? "flexural" : "shear";
   }
 
   // cos θ and sin θ of every local particle (owned and ghosts), once per step.

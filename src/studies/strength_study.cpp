@@ -1,57 +1,48 @@
-// `pdq strength` for mplm2d: the scenario becomes an Example (its particles, model
-// parameters and steps; an mplm_beam or mplm_plate generator also gives the load's unit,
-// the span and the ACI 318 / classical value), the [strength] table and --set items the
-// search's options. Prints each trial as it ends and the result, and writes
-// <output>/strength/: strength.txt (the report), trials.csv, and trial_NN/ with each
-// trial's load-displacement history and final restart files (for `pdq post picture`).
+#include "studies/strength_study.hpp"
+
 #include <fmt/format.h>
 
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "engine/atomic_file.hpp"
 #include "engine/error.hpp"
 #include "engine/model.hpp"
-#include "prep/mplm/generators.hpp"
-#include "studies/mplm_strength.hpp"
-#include "studies/strength_registry.hpp"
+#include "studies/reference.hpp"
 
-namespace pdq::mplm {
+namespace pdq {
+
+strength::Case strengthCase(const Scenario& sc) {
+  const Problem& pb = sc.problem;
+  strength::Case c;
+  c.source = pb.source;
+  c.model = pb.modelName;
+  c.params = sc.modelParams;
+  for (const auto& k : sc.strengthModel.keys()) {
+    const auto v = sc.strengthModel.raw(k);
+    c.params.set(k, v->text, v->file, v->line);
+  }
+  auto model = ModelRegistry::create(c.model, c.source);
+  model->configure(c.params);
+  c.params.checkAllUsed();
+  if (model->strengthSpec().load.empty())
+    throw InputError(pb.source, 0,
+                     "model " + c.model +
+                         " declares no strength spec, so pdq strength cannot judge its trials "
+                         "(engine/model.hpp, StrengthSpec)");
+  c.particles = pb.particles;
+  c.run = pb.run;
+  c.unitLoad = referenceFor(sc, c.params).unitLoad;
+  return c;
+}
+
 namespace {
 
 namespace fs = std::filesystem;
+using strength::Trial;
 
-Example fromScenario(const Scenario& sc) {
-  const Problem& pb = sc.problem;
-  Example ex;
-  if (sc.generator == "mplm_beam") {
-    ex = beam(beamSpec(sc.generatorParams, sc.modelParams));
-  } else if (sc.generator == "mplm_plate") {
-    ex = plate(plateSpec(sc.generatorParams, sc.modelParams));
-  } else {
-    ex.unit = "x load_scale";  // loads as the particle files give them, times load_scale
-  }
-  ex.name = fs::path(pb.source).stem().string();
-  ex.title = pb.source;
-  ex.particles = pb.particles;
-  ex.params.clear();
-  for (const auto& k : sc.modelParams.keys()) ex.params[k] = sc.modelParams.raw(k)->text;
-  ex.steps = pb.run.steps;
-  // [strength.model] overrides, checked here so that a wrong key is named at its line.
-  Params check = sc.modelParams;
-  for (const auto& k : sc.strengthModel.keys()) {
-    const auto v = sc.strengthModel.raw(k);
-    ex.params[k] = v->text;
-    check.set(k, v->text, v->file, v->line);
-  }
-  ModelRegistry::create("mplm2d")->configure(check);
-  check.checkAllUsed();
-  return ex;
-}
-
-StrengthOptions readOptions(const Params& o, const std::string& outDir) {
-  StrengthOptions opt;
+strength::Options readOptions(const Params& o, const std::string& outDir) {
+  strength::Options opt;
   opt.relTol = o.number("rel_tol", opt.relTol, 1e-6, 10);
   opt.maxTrials = static_cast<int>(o.number("max_trials", opt.maxTrials, 1, 1000));
   opt.atOnce = static_cast<int>(o.number("at_once", 2, 1, 64));
@@ -66,31 +57,33 @@ StrengthOptions readOptions(const Params& o, const std::string& outDir) {
   return opt;
 }
 
-std::string trialHeader(const Example& ex) {
+std::string trialHeader(const Reference& ref) {
   return fmt::format("  {:>5}  {:>12}  {:<6}  {:>14}  {:>7}  {}\n", "trial",
-                     "load (" + ex.unit + ")", "result", "end |u| (mm)", "broken", "damage");
+                     "load (" + ref.unit + ")", "result", "end |u| (mm)", "broken", "damage");
 }
 
-std::string trialLine(const Trial& t, const Example& ex) {
+std::string trialLine(const Trial& t) {
   return fmt::format("  {:>5}  {:>12.6g}  {:<6}  {:>14.4g}  {:>7}  {}\n", t.index, t.load,
-                     t.holds ? "holds" : "fails", 1e3 * t.uEnd, t.brokenEnd,
-                     t.mode + (ex.beam || t.mode == "none" ? "" : " damage"));
+                     t.holds ? "holds" : "fails", 1e3 * t.uEnd, t.brokenEnd, t.mode);
 }
 
-void mplmStrength(Scenario& sc, const Params& o, Comm& comm) {
+}  // namespace
+
+void strengthStudy(const Scenario& sc, const Params& o, Comm& comm) {
   const Problem& pb = sc.problem;
-  const Example ex = fromScenario(sc);
+  const strength::Case c = strengthCase(sc);
+  const Reference ref = referenceFor(sc, c.params);
   const std::string dir = pb.run.outDir + "/strength";
-  StrengthOptions opt = readOptions(o, dir);
-  const bool known = ex.aci > 0;
+  strength::Options opt = readOptions(o, dir);
+  const bool known = ref.value > 0;
   const auto need = [&](const char* key, double fallback) {
     if (!o.has(key) && !known)
       throw InputError(pb.source, 0,
                        std::string("give the search's starting bracket: [strength] ") + key +
-                           " (or --set " + key + "=...), in units of load_scale");
+                           " (or --set " + key + "=...), in " + ref.unit);
     return o.number(key, fallback, 1e-300, 1e300);
   };
-  const double lo = need("lo", 0.5 * ex.aci), hi = need("hi", 1.5 * ex.aci);
+  const double lo = need("lo", 0.5 * ref.value), hi = need("hi", 1.5 * ref.value);
   const double reference = o.number("reference", 0.0);
   if (!(hi > lo))
     throw InputError(pb.source, o.raw("hi") ? o.raw("hi")->line : 0, "hi must exceed lo");
@@ -99,26 +92,26 @@ void mplmStrength(Scenario& sc, const Params& o, Comm& comm) {
     fs::create_directories(dir);
     std::printf("%s", fmt::format("pdq strength: {}, {} particles, {} steps{}; {} load{} per "
                                   "round\n",
-                                  pb.source, ex.particles.size(), ex.steps,
+                                  pb.source, c.particles.size(), c.run.steps,
                                   opt.timeScale != 1 ? fmt::format(" x {}", opt.timeScale) : "",
                                   opt.atOnce, opt.atOnce > 1 ? "s" : "")
                           .c_str());
-    std::printf("%s", trialHeader(ex).c_str());
+    std::printf("%s", trialHeader(ref).c_str());
     std::fflush(stdout);
   }
   opt.onTrial = [&](const Trial& t) {
     if (!comm.root()) return;
-    std::printf("%s", trialLine(t, ex).c_str());
+    std::printf("%s", trialLine(t).c_str());
     std::fflush(stdout);
   };
-  const Strength st = findStrength(ex, lo, hi, comm, opt);
+  const strength::Result st = strength::findStrength(c, lo, hi, comm, opt);
   if (!comm.root()) return;
 
   std::string report;  // the result; strength.txt has the trials above it
   if (st.lower >= 0 && st.upper >= 0) {
     report +=
         fmt::format("strength: {:.4g} to {:.4g} {} (holds at the first, fails at the second)\n",
-                    st.lower, st.upper, ex.unit);
+                    st.lower, st.upper, ref.unit);
     report += "failure mode: " + st.mode + "\n";
     for (const Trial& t : st.trials)
       if (t.load == st.upper)
@@ -128,24 +121,23 @@ void mplmStrength(Scenario& sc, const Params& o, Comm& comm) {
             t.dir, pb.source, t.dir, t.steps);
   } else if (st.upper < 0) {
     report += fmt::format("no failure found up to {:.4g} {}: raise hi or max_trials\n",
-                          st.trials.empty() ? hi : st.trials.back().load, ex.unit);
+                          st.trials.empty() ? hi : st.trials.back().load, ref.unit);
   } else {
     report +=
-        fmt::format("fails at every load tried, down to {:.4g} {}: lower lo\n", st.upper, ex.unit);
+        fmt::format("fails at every load tried, down to {:.4g} {}: lower lo\n", st.upper, ref.unit);
   }
   if (known)
-    report += fmt::format("{}: {:.4g} {} ({})\n", ex.beam ? "ACI 318" : "classical", ex.aci,
-                          ex.unit, ex.aciMode);
+    report += fmt::format("{}: {:.4g} {} ({})\n", ref.label, ref.value, ref.unit, ref.mode);
   if (reference > 0) {
-    report += fmt::format("reference: {:.4g} {}", reference, ex.unit);
+    report += fmt::format("reference: {:.4g} {}", reference, ref.unit);
     if (st.lower >= 0 && st.upper >= 0)
       report += fmt::format(" (pdq / reference = {:.3f})", 0.5 * (st.lower + st.upper) / reference);
     report += "\n";
   }
   report += "outputs: " + dir + "/ (strength.txt, trials.csv, trial_NN/)\n";
-  std::string trials = fmt::format("# pdq strength: {} (model mplm2d)\n", pb.source);
-  trials += trialHeader(ex);
-  for (const Trial& t : st.trials) trials += trialLine(t, ex);
+  std::string trials = fmt::format("# pdq strength: {} (model {})\n", pb.source, c.model);
+  trials += trialHeader(ref);
+  for (const Trial& t : st.trials) trials += trialLine(t);
   std::string csv = "trial,load,holds,u_hold,u_mid,u_end,broken_mid,broken_end,steps,mode\n";
   for (const Trial& t : st.trials)
     csv += fmt::format("{},{},{},{},{},{},{},{},{},{}\n", t.index, t.load, t.holds ? 1 : 0, t.uHold,
@@ -155,9 +147,4 @@ void mplmStrength(Scenario& sc, const Params& o, Comm& comm) {
   std::printf("%s", report.c_str());
 }
 
-}  // namespace
-
-PDQ_REGISTER_STRENGTH(mplmStrength, "mplm2d",
-                      "peak load still reaching static equilibrium, by bisection (thesis §4.4)");
-
-}  // namespace pdq::mplm
+}  // namespace pdq

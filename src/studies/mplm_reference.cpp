@@ -1,0 +1,79 @@
+#include "studies/mplm_reference.hpp"
+
+#include "prep/rebar.hpp"
+
+namespace pdq::mplm {
+namespace {
+
+Parameters parameters(const Params& model) {
+  Parameters par;
+  par.read(model);
+  return par;
+}
+
+double barArea(double diameter) { return prep::Bar{0, 0, 0, 0, diameter}.area(); }
+
+}  // namespace
+
+Strengths strengths(const Parameters& par) {
+  Strengths s;
+  s.ft = par.E * par.law.epsT;
+  s.fc = 10 * s.ft;
+  s.Es = par.steelE;
+  s.fy = par.steelE * par.steelYield;
+  return s;
+}
+
+aci318::Section section(const BeamSpec& b, const Parameters& par) {
+  const Strengths m = strengths(par);
+  aci318::Section sec;
+  sec.b = b.thickness;
+  sec.h = b.depth;
+  sec.d = b.depth - b.barCentroid;
+  sec.As = b.barDiameter > 0 ? barArea(b.barDiameter) : 0;
+  sec.fc = m.fc;
+  sec.fy = sec.fyt = m.fy;
+  sec.Es = m.Es;
+  if (b.stirrupDiameter > 0) {
+    sec.Av = barArea(b.stirrupDiameter);
+    sec.sv = b.stirrupSpacing;
+  }
+  return sec;
+}
+
+Reference plateReference(const Params& generator, const Params& model) {
+  const PlateSpec spec = plateSpec(generator, model);
+  Reference r;
+  if (!spec.loaded) return r;
+  const Strengths m = strengths(parameters(model));
+  r.unit = "MPa";
+  r.unitLoad = spec.stress / 1e6;
+  r.value = (spec.compression ? m.fc : m.ft) / 1e6;
+  r.label = "classical";
+  r.mode = spec.compression ? "compression" : "tension";
+  return r;
+}
+
+Reference beamReference(const Params& generator, const Params& model) {
+  const BeamSpec b = beamSpec(generator, model);
+  Reference r;
+  if (b.lineLoad == 0) return r;
+  r.unit = "kN/m";
+  r.unitLoad = b.lineLoad / 1e3;
+  if (b.supports == "none") return r;
+  const Parameters par = parameters(model);
+  if (b.barDiameter > 0) {
+    const aci318::Capacity c = aci318::simplySupportedUniform(section(b, par), b.span);
+    r.value = c.governing() / 1e3;
+    r.label = "ACI 318";
+    r.mode = c.mode();
+  } else {
+    const double Mcr = aci318::crackingMoment(strengths(par).ft, b.thickness, b.depth);
+    r.value = aci318::uniformLoadFromMoment(Mcr, b.span) / 1e3;
+    r.label = "classical";
+    r.mode = "cracking";
+  }
+  return r;
+}
+
+}  // namespace pdq::mplm

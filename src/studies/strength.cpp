@@ -1,0 +1,276 @@
+#include "studies/strength.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <type_traits>
+
+#include "engine/error.hpp"
+#include "engine/model.hpp"
+#include "io/standard_outputs.hpp"
+
+namespace pdq::strength {
+namespace {
+
+std::string number(double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+// How a trial loads the structure: its peak (× the problem's loads), the ramp to it and
+// the run in steps, and the hold-phase damping.
+struct Loading {
+  double scale = 1;
+  long rampSteps = 0, steps = 0;
+  double holdDamping = 0;
+};
+
+// The one place that turns a Loading into the model's parameters and the run's length.
+void applyLoading(const Loading& l, Params& model, RunConfig& run) {
+  model.set("load_scale", number(l.scale));
+  model.set("hold_damping_ratio", number(l.holdDamping));
+  model.set("ramp_fraction", number(static_cast<double>(l.rampSteps) / l.steps));
+  run.steps = l.steps;
+}
+
+std::unique_ptr<Simulation> simulation(const Case& c, const Params& params, RunConfig run,
+                                       Comm& comm) {
+  auto model = ModelRegistry::create(c.model, c.source);
+  model->configure(params);
+  params.checkAllUsed();
+  run.procs = {0, 0, 0};  // a trial runs on a group of ranks of its own
+  auto sim = std::make_unique<Simulation>(std::move(model), c.particles, run, comm);
+  sim->setup();
+  return sim;
+}
+
+// The trials' ramp and run length in steps (the same for every load): the problem's ramp
+// and its hold stretched by holdLength, over timeScale × its simulated time, at its own
+// time step or (stableStep) the model's stable one, read once from the model set up.
+Loading schedule(const Case& c, Comm& comm, const Options& opt) {
+  Params p = c.params;
+  long steps = static_cast<long>(std::ceil(c.run.steps * opt.timeScale));
+  if (opt.stableStep) {
+    const double duration = steps * p.number("dt", 0.0);
+    p.set("dt", "0");
+    RunConfig run = c.run;
+    run.steps = 1;
+    run.outDir = ".";
+    const double dt = simulation(c, p, run, comm)->context().dt();
+    if (duration > 0) steps = static_cast<long>(std::ceil(duration / dt));
+  }
+  Loading l;
+  l.rampSteps = static_cast<long>(std::ceil(p.number("ramp_fraction", 0.75) * steps));
+  l.steps = l.rampSteps + static_cast<long>(std::ceil(opt.holdLength * (steps - l.rampSteps)));
+  l.holdDamping = opt.holdDamping;
+  return l;
+}
+
+std::string trialDir(const Options& opt, int index) {
+  if (opt.outDir.empty()) return "";
+  char name[32];
+  std::snprintf(name, sizeof name, "/trial_%02d", index);
+  return opt.outDir + name;
+}
+
+// The position of each named global among the model's (InputError if it has none such).
+std::vector<std::size_t> positions(const Case& c, const std::vector<std::string>& globals,
+                                   const std::vector<std::string>& wanted) {
+  std::vector<std::size_t> out;
+  for (const std::string& w : wanted) {
+    const auto it = std::find(globals.begin(), globals.end(), w);
+    if (it == globals.end())
+      throw InputError(
+          c.source, 0,
+          "model " + c.model + " names '" + w + "' in its strength spec, but has no such global");
+    out.push_back(static_cast<std::size_t>(it - globals.begin()));
+  }
+  return out;
+}
+
+Trial runTrial(const Case& c, Loading l, double load, int index, Comm& comm, const Options& opt) {
+  Trial tr;
+  tr.index = index;
+  tr.load = load;
+  tr.dir = trialDir(opt, index);
+  l.scale = load / c.unitLoad;
+  Params p = c.params;
+  RunConfig run = c.run;
+  run.outDir = tr.dir.empty() ? "." : tr.dir;
+  if (opt.stableStep) p.set("dt", "0");
+  applyLoading(l, p, run);
+  auto simPtr = simulation(c, p, run, comm);
+  Simulation& sim = *simPtr;
+  const StrengthSpec spec = sim.model().strengthSpec();
+  if (spec.load.empty() || spec.displacement.empty() || !spec.failureMode)
+    throw InputError(c.source, 0, "model " + c.model + " declares no strength spec");
+  const auto names = sim.model().globals();
+  const std::size_t loadAt = positions(c, names, {spec.load})[0];
+  const std::size_t damageAt = positions(c, names, {spec.damage})[0];
+  const auto uAt = positions(c, names, spec.displacement);
+  auto displacement = [&](const std::vector<double>& v) {
+    double u = std::fabs(v[uAt[0]]);
+    for (std::size_t k = 1; k < uAt.size(); ++k) u = std::hypot(u, v[uAt[k]]);
+    return u;
+  };
+  if (!tr.dir.empty()) {
+    OutputSettings out;  // the load–displacement history and the state at the end
+    out.globalsEvery = std::max(1L, l.steps / 400);
+    addStandardOutputs(sim, out);
+  }
+  const long holdStart = l.rampSteps, mid = holdStart + (l.steps - holdStart) / 2;
+  const long check = std::max(1L, l.steps / 100);
+  bool runaway = false;
+  while (sim.advance()) {
+    const long step = sim.step();
+    if (step != holdStart && step != mid && step % check != 0) continue;
+    const auto values = sim.model().globalValues(sim.context());
+    const double u = displacement(values);
+    if (!std::isfinite(u)) {
+      runaway = true;
+      break;
+    }
+    if (step == holdStart) tr.uHold = u;
+    if (step == mid) {
+      tr.uMid = u;
+      tr.brokenMid = values[damageAt];
+    }
+    if (step >= holdStart && tr.uHold > 0 && u > opt.runaway * tr.uHold) {
+      runaway = true;
+      break;
+    }
+  }
+  tr.steps = sim.step();
+  const auto values = sim.model().globalValues(sim.context());
+  // At the end of the hold the model must be applying the trial's peak.
+  if (tr.steps == l.steps && !(std::fabs(values[loadAt] - l.scale) <= 1e-12 * std::fabs(l.scale)))
+    throw InputError(c.source, 0,
+                     "model " + c.model + "'s global '" + spec.load + "' is " +
+                         number(values[loadAt]) + " at the end of a trial at load_scale " +
+                         number(l.scale) + ": it does not follow the trial's loading");
+  tr.uEnd = displacement(values);
+  tr.brokenEnd = values[damageAt];
+  tr.holds = !runaway && std::isfinite(tr.uEnd) &&
+             tr.brokenEnd - tr.brokenMid <= opt.lateBreaks * tr.brokenEnd + 1 &&
+             std::fabs(tr.uEnd - tr.uMid) <= opt.settle * std::fabs(tr.uMid);
+  tr.mode = spec.failureMode(sim.context());
+  if (!tr.dir.empty()) sim.finish();
+  return tr;
+}
+
+// A trial travels between groups of ranks as its numbers, bit for bit, then its failure mode.
+struct Numbers {
+  double load, uHold, uMid, uEnd, brokenMid, brokenEnd;
+  long steps;
+  int index, holds;
+  std::size_t modeLength;
+};
+static_assert(std::is_trivially_copyable_v<Numbers>);
+
+void pack(const Trial& t, std::vector<char>& out) {
+  const Numbers n{t.load,      t.uHold, t.uMid,  t.uEnd,          t.brokenMid,
+                  t.brokenEnd, t.steps, t.index, t.holds ? 1 : 0, t.mode.size()};
+  const char* p = reinterpret_cast<const char*>(&n);
+  out.insert(out.end(), p, p + sizeof n);
+  out.insert(out.end(), t.mode.begin(), t.mode.end());
+}
+
+// Reads the trial at `at` and moves `at` past it.
+Trial unpack(const std::vector<char>& in, std::size_t& at, const Options& opt) {
+  Numbers n;
+  std::memcpy(&n, in.data() + at, sizeof n);
+  at += sizeof n;
+  Trial t;
+  t.index = n.index;
+  t.load = n.load;
+  t.holds = n.holds != 0;
+  t.uHold = n.uHold;
+  t.uMid = n.uMid;
+  t.uEnd = n.uEnd;
+  t.brokenMid = n.brokenMid;
+  t.brokenEnd = n.brokenEnd;
+  t.steps = n.steps;
+  t.mode.assign(in.data() + at, n.modeLength);
+  at += n.modeLength;
+  t.dir = trialDir(opt, t.index);
+  return t;
+}
+
+// Runs the loads side by side: rank r belongs to group r·groups/size, and group g runs the
+// loads k ≡ g (mod groups). Every rank returns every trial, in the order of `loads`.
+std::vector<Trial> runBatch(const Case& c, const Loading& l, const std::vector<double>& loads,
+                            int firstIndex, Comm& comm, Comm& group, int colour, int groups,
+                            const Options& opt) {
+  std::vector<char> mine;
+  for (std::size_t k = 0; k < loads.size(); ++k) {
+    if (static_cast<int>(k % groups) != colour) continue;
+    const Trial t = runTrial(c, l, loads[k], firstIndex + static_cast<int>(k), group, opt);
+    if (group.root()) pack(t, mine);
+  }
+  std::vector<char> all;
+  for (const auto& block : comm.gather(mine)) all.insert(all.end(), block.begin(), block.end());
+  all = comm.broadcast(std::move(all));
+  std::vector<Trial> out(loads.size());
+  for (std::size_t at = 0; at < all.size();) {
+    Trial t = unpack(all, at, opt);
+    out[t.index - firstIndex] = std::move(t);
+  }
+  return out;
+}
+
+}  // namespace
+
+Result findStrength(const Case& c, double lo, double hi, Comm& comm, const Options& opt) {
+  const int atOnce = std::max(1, opt.atOnce);
+  const int groups = std::min(atOnce, comm.size());
+  const int colour = comm.rank() * groups / comm.size();
+  const Loading loading = schedule(c, comm, opt);
+  Comm group = comm.split(colour);
+  Result out;
+  // The bracket so far: the smallest failing load, and the largest holding one below it.
+  auto bracket = [&](double& holds, double& fails) {
+    holds = fails = -1;
+    for (const Trial& t : out.trials)
+      if (!t.holds && (fails < 0 || t.load < fails)) fails = t.load;
+    for (const Trial& t : out.trials)
+      if (t.holds && (fails < 0 || t.load < fails) && t.load > holds) holds = t.load;
+  };
+  while (static_cast<int>(out.trials.size()) < opt.maxTrials) {
+    double holds, fails;
+    bracket(holds, fails);
+    if (holds >= 0 && fails >= 0 && fails - holds <= opt.relTol * holds) break;
+    const int n = std::min(atOnce, opt.maxTrials - static_cast<int>(out.trials.size()));
+    std::vector<double> loads;
+    if (out.trials.empty()) {
+      loads.push_back(lo);  // the given bracket, and evenly inside it
+      if (n > 1) loads.push_back(hi);
+      for (int k = 1; k <= n - 2; ++k) loads.push_back(lo + (hi - lo) * k / (n - 1));
+    } else if (holds < 0) {  // everything failed: halve
+      for (int k = 1; k <= n; ++k) loads.push_back(fails / std::pow(2.0, k));
+    } else if (fails < 0) {  // everything held: the given upper end, then doubling
+      const bool hiTried = std::any_of(out.trials.begin(), out.trials.end(),
+                                       [&](const Trial& t) { return t.load == hi; });
+      double next = hi > holds && !hiTried ? hi : 2 * holds;
+      for (int k = 0; k < n; ++k, next *= 2) loads.push_back(next);
+    } else {
+      for (int k = 1; k <= n; ++k) loads.push_back(holds + (fails - holds) * k / (n + 1));
+    }
+    const auto batch = runBatch(c, loading, loads, static_cast<int>(out.trials.size()) + 1, comm,
+                                group, colour, groups, opt);
+    out.trials.insert(out.trials.end(), batch.begin(), batch.end());
+    if (opt.onTrial)
+      for (const Trial& t : batch) opt.onTrial(t);
+  }
+  double holds, fails;
+  bracket(holds, fails);
+  out.lower = holds;
+  out.upper = fails;
+  for (const Trial& t : out.trials)
+    if (t.load == fails) out.mode = t.mode;
+  return out;
+}
+
+}  // namespace pdq::strength
