@@ -92,12 +92,6 @@ void monitor(ParticleSet& ps, const std::vector<std::size_t>& idx) {
 
 bool isConcrete(const double* f) { return !isSteel(f); }
 
-double minCoord(const ParticleSet& ps, int axis) {
-  double v = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < ps.size(); ++k) v = std::min(v, ps.fixedRow(k)[axis]);
-  return v;
-}
-
 double maxCoord(const ParticleSet& ps, int axis) {
   double v = -std::numeric_limits<double>::infinity();
   for (std::size_t k = 0; k < ps.size(); ++k) v = std::max(v, ps.fixedRow(k)[axis]);

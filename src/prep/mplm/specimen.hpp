@@ -35,9 +35,8 @@ void loadUniform(ParticleSet& ps, const std::vector<std::size_t>& idx, int axis,
                  double hi, double totalFx, double totalFy);
 void monitor(ParticleSet& ps, const std::vector<std::size_t>& idx);
 
-// Concrete particles only, and extremes of their coordinates.
+// Concrete particles only, and the largest coordinate along an axis.
 bool isConcrete(const double* fixedRow);
-double minCoord(const ParticleSet& ps, int axis);
 double maxCoord(const ParticleSet& ps, int axis);
 
 }  // namespace pdq::mplm
