@@ -53,7 +53,7 @@ void pictureCommand(const PictureCommandOptions& o) {
   const std::string restart = o.restart.empty() ? latestRestart(pb.run.outDir, o.input) : o.restart;
   // Any step may be drawn, also from a run longer than the scenario's (a strength trial).
   pb.run.steps = std::numeric_limits<long>::max();
-  BondState bonds = readRestart(restart, pb);
+  RestartState bonds = readRestart(restart, pb);
   // The picture options: the scenario's [output.picture] table, then --set items.
   Params table = pb.output.picture ? *pb.output.picture : Params("picture options");
   setFromCommandLine(table, o.set);
@@ -70,7 +70,7 @@ void pictureCommand(const PictureCommandOptions& o) {
   cfg.outDir.assign(1, '.');
   const std::string outDir = pb.run.outDir;
   Simulation sim(std::move(pb.model), std::move(pb.particles), cfg, comm);
-  sim.restoreBonds(std::move(bonds));
+  sim.restore(std::move(bonds));
   sim.setup();
   const post::Snapshot snap = post::gatherSnapshot(sim.context(), sim.model(), comm, sim.step());
   if (comm.root()) {

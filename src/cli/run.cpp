@@ -19,12 +19,12 @@ void runCommand(const RunOptions& o) {
   Problem& pb = sc.problem;
   if (!o.out.empty()) pb.run.outDir = o.out;
   if (o.steps >= 0) pb.run.steps = o.steps;
-  BondState bonds;
+  RestartState bonds;
   if (!o.restart.empty()) bonds = readRestart(o.restart, pb);
   const double particles = static_cast<double>(pb.particles.size());
   const std::string modelName = pb.modelName;
   Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
-  if (!o.restart.empty()) sim.restoreBonds(std::move(bonds));
+  if (!o.restart.empty()) sim.restore(std::move(bonds));
   addStandardOutputs(sim, pb.output);
   const bool talk = comm.root() && o.verbosity != Verbosity::Quiet;
   sim.setup();

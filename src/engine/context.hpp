@@ -10,6 +10,7 @@
 
 #include "engine/bonds.hpp"
 #include "engine/exact_sum.hpp"
+#include "engine/integrator.hpp"
 #include "engine/particles.hpp"
 #include "engine/proccube.hpp"
 
@@ -28,6 +29,12 @@ class Context {
   double dt() const { return dt_; }
   double time() const { return step_ * dt_; }
   void setDt(double dt) { dt_ = dt; }
+  // The load protocol (the scenario's [loading]) and its factor at the current time.
+  const Loading& loading() const { return loading_; }
+  double loadFactor() const { return loading_.factor(time()); }
+  // The engine's integrator, one step (the default Model::integrate).
+  void integrate() { integrator_->step(*this); }
+  const Integrator& integrator() const { return *integrator_; }
   int dim() const { return cube_.decomposition().dim(); }
   const Domain& domain() const { return cube_.decomposition().domain(); }
   // The smallest cell edge: every pair closer than this is among a particle's nearby
@@ -70,6 +77,8 @@ class Context {
   // --- set by the engine ---
   void setStep(long s) { step_ = s; }
   void setSteps(long s) { steps_ = s; }
+  void setLoading(const Loading& l) { loading_ = l; }
+  void setIntegrator(Integrator* i) { integrator_ = i; }
 
  private:
   ProcCube& cube_;
@@ -77,6 +86,8 @@ class Context {
   std::ostream& log_;
   long step_ = 0, steps_ = 0;
   double dt_ = 0;
+  Loading loading_;
+  Integrator* integrator_ = nullptr;
   std::string stopReason_;
 };
 

@@ -12,6 +12,11 @@
 //   prepare(ctx)             once, after restart: anything derived from current state
 //   every step: force(ctx) -> integrate(ctx) -> engine exchange/shuffle -> outputs
 //   neighboursChanged(ctx)   after every shuffle (shuffling models only)
+// integrate() is the engine's integrator (engine/integrator.hpp) unless a model with special
+// needs overrides it: the model declares its degrees of freedom (motion) and each owned
+// particle's mass, inertia, constraints and loads (bodies), and writes forces and moments
+// into the integ columns it named. A 3D model with rotations declares
+// Rotation::Spatial (orientation as a unit quaternion, angular velocity in the global frame).
 // A model writes only its owned particles (i < particles.owned()) and reads neighbours
 // through the ghosts; it never calls MPI. See src/models/spring/ for a commented example.
 #include <functional>
@@ -21,6 +26,7 @@
 #include <vector>
 
 #include "engine/context.hpp"
+#include "engine/integrator.hpp"
 #include "engine/params.hpp"
 #include "engine/registry.hpp"
 #include "engine/schema.hpp"
@@ -60,7 +66,18 @@ class Model {
   virtual void prepare(Context&) {}
   virtual void neighboursChanged(Context&) {}
   virtual void force(Context& ctx) = 0;
-  virtual void integrate(Context& ctx) = 0;
+  virtual void integrate(Context& ctx) { ctx.integrate(); }
+  // For the engine's integrator: which columns move and how (default: x y z, vx vy vz,
+  // fx fy fz, no rotation), and every owned particle's Body (default: unit mass, free),
+  // asked for before the first step and again after every shuffle.
+  virtual Motion motion() const { return {}; }
+  virtual void bodies(const Context&, std::span<Body> /*owned*/) const {}
+
+  // What the model keeps between steps beyond its attributes and bonds (a random
+  // generator's state, ...), identical on every rank; saved with restart files and given
+  // back after prepare() on a restart. Anything prepare() derives again is not state.
+  virtual std::vector<double> saveState() const { return {}; }
+  virtual void loadState(std::span<const double> /*saved*/) {}
 
   // Per-particle derived quantities for visual output (damage, energy, ...).
   virtual std::vector<std::string> fields() const { return {}; }

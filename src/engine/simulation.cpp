@@ -89,24 +89,27 @@ void Simulation::setup() {
   initial_ = ParticleSet{};  // the global tables are no longer needed
   cube_->rebuild(cfg_.firstStep);
   ctx_ = std::make_unique<Context>(particles_, bonds_, *cube_, comm_, debug_);
+  integrator_ = std::make_unique<Integrator>(*model_);
+  ctx_->setIntegrator(integrator_.get());
+  ctx_->setLoading(cfg_.loading);
   step_ = cfg_.firstStep;
   ctx_->setStep(step_);
   ctx_->setSteps(cfg_.steps);
   model_->setup(*ctx_);
-  if (bondState_) {
+  if (restart_) {
     // A restart brings its bonds: the saved list replaces what setup built from the
     // (possibly moved) particles, so nothing is lost or added on the way.
     bonds_.discardPending();
     std::map<Gid, std::size_t> local;
     for (std::size_t i = 0; i < particles_.owned(); ++i) local[particles_.gid(i)] = i;
-    for (std::size_t k = 0; k < bondState_->owner.size(); ++k) {
-      auto it = local.find(bondState_->owner[k]);
-      if (it != local.end()) bonds_.add(it->second, bondState_->partner[k]);
+    for (std::size_t k = 0; k < restart_->owner.size(); ++k) {
+      auto it = local.find(restart_->owner[k]);
+      if (it != local.end()) bonds_.add(it->second, restart_->partner[k]);
     }
   }
   bonds_.finish(particles_.owned());
-  if (bondState_) {
-    const BondState& s = *bondState_;
+  if (restart_) {
+    const RestartState& s = *restart_;
     const int nB = bonds_.nAttr();
     std::map<std::pair<Gid, Gid>, std::size_t> where;
     for (std::size_t k = 0; k < s.owner.size(); ++k) where[{s.owner[k], s.partner[k]}] = k;
@@ -116,12 +119,27 @@ void Simulation::setup() {
         std::copy_n(&s.attrs[k * nB], nB, bonds_.attr(b));
         if (s.dead[k]) bonds_.kill(b);
       }
-    bondState_.reset();
   }
   cube_->remapBonds(step_);  // after restored dead flags: a dead bond's partner may be gone
   model_->prepare(*ctx_);
+  if (restart_ && restart_->hasState) {
+    // The run continues with the time step it had (a model may derive it from the current,
+    // damaged, state) and what the integrator and the model kept.
+    ctx_->setDt(restart_->dt);
+    integrator_->setState(restart_->integrator);
+    model_->loadState(restart_->model);
+  }
+  restart_.reset();
   cube_->halo();  // setup and prepare may have changed alterable attributes
   if (!(ctx_->dt() > 0)) throw InputError(cfg_.source, 0, "the model set no positive time step");
+  if (cfg_.steps < 0) {
+    // The run lasts the load protocol's ramp and hold (a duration within round-off of a
+    // whole number of steps takes that number).
+    const Loading& L = cfg_.loading;
+    cfg_.steps =
+        std::max(0L, static_cast<long>(std::ceil((L.rampTime + L.holdTime) / ctx_->dt() - 1e-9)));
+    ctx_->setSteps(cfg_.steps);
+  }
   debug_ << "rank " << comm_.rank() << ": core cells [" << dec_->coreLo(0) << "," << dec_->coreHi(0)
          << ")x[" << dec_->coreLo(1) << "," << dec_->coreHi(1) << ")x[" << dec_->coreLo(2) << ","
          << dec_->coreHi(2) << "), " << particles_.owned() << " owned, " << particles_.ghosts()
@@ -157,6 +175,7 @@ bool Simulation::advance() {
   if (shuffleNow) {
     Timers::Scope t(timers_, Phase::Shuffle);
     cube_->shuffle(step_);
+    integrator_->particlesMoved();
     model_->neighboursChanged(*ctx_);
     stats_.shuffles++;
     stats_.maxShuffleMessages = std::max(stats_.maxShuffleMessages, cube_->stats().shuffleMessages);

@@ -29,18 +29,23 @@ struct RunConfig {
   std::array<bool, 3> periodic{false, false, false};
   std::array<double, 3> boxLo{}, boxHi{};  // the box along periodic axes
   int dim = 0;                             // 0 = from the particles (flat in Z -> 2D)
-  long steps = 0;
-  long firstStep = 0;  // a restarted run continues from here
+  long steps = 0;                          // < 0: as long as the load protocol's ramp and hold
+  long firstStep = 0;                      // a restarted run continues from here
+  Loading loading;                         // the load protocol
   std::string outDir = ".";
   std::string source = "input";  // file named in configuration errors
   long checkEvery = 100;         // scan for non-finite positions every N steps
 };
 
-// Bond attributes to restore after setup (a restart), keyed by (owner, partner) IDs.
-struct BondState {
+// What a restart brings back beyond the particles' attributes: the bonds, keyed by (owner,
+// partner) IDs, and what the engine and the model keep between steps.
+struct RestartState {
   std::vector<Gid> owner, partner;
   std::vector<std::uint8_t> dead;
   std::vector<double> attrs;  // nBondAttr per bond
+  bool hasState = false;      // false: a restart file without its state file
+  double dt = 0;
+  std::vector<double> integrator, model;
 };
 
 struct StepStats {
@@ -54,7 +59,7 @@ class Simulation {
   ~Simulation();
 
   void addOutput(std::unique_ptr<Output> out);
-  void restoreBonds(BondState state) { bondState_ = std::move(state); }
+  void restore(RestartState state) { restart_ = std::move(state); }
 
   void setup();    // decomposition, distribution, model setup; called by run() if needed
   void run();      // all steps
@@ -91,8 +96,9 @@ class Simulation {
   std::ostringstream debug_;
   std::unique_ptr<Context> ctx_;
   std::vector<std::unique_ptr<Output>> outputs_;
-  std::optional<BondState> bondState_;
+  std::optional<RestartState> restart_;
   Timers timers_;
+  std::unique_ptr<Integrator> integrator_;
   StepStats stats_;
   long step_ = 0;
   double slack_ = 0;

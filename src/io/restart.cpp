@@ -28,6 +28,10 @@ std::string bondRestartPath(const std::string& dir, long step) {
   return dir + "/Bonds." + std::to_string(step) + ".rst";
 }
 
+std::string stateRestartPath(const std::string& dir, long step) {
+  return dir + "/State." + std::to_string(step) + ".rst";
+}
+
 std::string fixedRestartPath(const std::string& dir, long step) {
   return dir + "/ParticleFixedAttrs." + std::to_string(step) + ".rst";
 }
@@ -84,6 +88,20 @@ void RestartOutput::write(OutputContext& out) {
       withFixed ? gatherSortedRows(out.comm, frows, 1 + nF) : std::vector<double>{};
   if (!out.comm.root()) return;
   std::string line;
+  {
+    // Global values, the same on every rank; written before the particle file like the bonds.
+    AtomicFile f(stateRestartPath(out.outDir, out.step));
+    auto row = [&](const char* key, const std::vector<double>& values) {
+      line = key;
+      for (double v : values) appendNumber(line, v);
+      f.stream() << line << "\n";
+    };
+    f.stream() << "# pdq state: step " << out.step << "\n";
+    row("dt", {out.ctx.dt()});
+    row("integrator", out.ctx.integrator().state());
+    row("model", out.model.saveState());
+    f.commit();
+  }
   if (withFixed) {
     std::string header =
         "# pdq fixed attributes: step " + std::to_string(out.step) + "\n# columns: id";
@@ -124,7 +142,46 @@ static long stepOfHeader(const std::string& path) {
   return step;
 }
 
-BondState readRestart(const std::string& path, Problem& pb) {
+// State.<step>.rst: lines "key value...".
+static void readState(const std::string& path, RestartState& st) {
+  std::ifstream in(path);
+  std::string line;
+  int n = 0;
+  bool dt = false;
+  while (std::getline(in, line)) {
+    ++n;
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream s(line);
+    std::string key;
+    s >> key;
+    std::vector<double> values;
+    std::string word;
+    while (s >> word) {
+      std::size_t used = 0;
+      double v = 0;
+      try {
+        v = std::stod(word, &used);
+      } catch (const std::exception&) {
+      }
+      if (used != word.size()) throw InputError(path, n, "'" + word + "' is not a number");
+      values.push_back(v);
+    }
+    if (key == "dt" && values.size() == 1) {
+      st.dt = values[0];
+      dt = true;
+    } else if (key == "integrator") {
+      st.integrator = values;
+    } else if (key == "model") {
+      st.model = values;
+    } else {
+      throw InputError(path, n, "expected 'dt VALUE', 'integrator VALUES' or 'model VALUES'");
+    }
+  }
+  if (!dt) throw InputError(path, 0, "the state file has no 'dt' line");
+  st.hasState = true;
+}
+
+RestartState readRestart(const std::string& path, Problem& pb) {
   const long step = stepOfHeader(path);
   const Schema schema = pb.model->schema();
   ParticleSet& ps = pb.particles;
@@ -144,14 +201,16 @@ BondState readRestart(const std::string& path, Problem& pb) {
     if (!seen[k])
       throw InputError(path, 0, "particle " + std::to_string(ps.gid[k]) + " is missing");
   pb.run.firstStep = step;
-  if (step > pb.run.steps) {
+  if (pb.run.steps >= 0 && step > pb.run.steps) {
     std::ostringstream os;
     os << "the restart is at step " << step << ", beyond the run's last step " << pb.run.steps;
     throw InputError(path, 1, os.str());
   }
-  BondState bonds;
+  RestartState bonds;
   std::string dir = std::filesystem::path(path).parent_path().string();
   if (dir.empty()) dir = ".";
+  const std::string spath = stateRestartPath(dir, step);
+  if (std::filesystem::exists(spath)) readState(spath, bonds);
   const std::string fpath = fixedRestartPath(dir, step);
   if (std::filesystem::exists(fpath))
     for (const auto& r : readNumberTable(fpath, 1 + ps.nFixed)) {

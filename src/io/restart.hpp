@@ -3,18 +3,21 @@
 // (global ID, current x y z, alterable attributes; 17 significant digits, so every double
 // reads back to the same bits), with '#' header lines naming the step and the columns.
 // Bonds.<step>.rst holds every bond's state (owner ID, partner ID, dead flag, bond
-// attributes), so damage survives a restart. A run restarted from a step continues
-// bitwise as the uninterrupted run would have.
+// attributes), so damage survives a restart. State.<step>.rst holds what the engine and
+// the model keep between steps (the time step, the integrator's hold damping, the model's
+// saveState()). A run restarted from a step continues bitwise as the uninterrupted run
+// would have, whatever its number of steps.
 #include <string>
 
 #include "engine/output.hpp"
-#include "engine/simulation.hpp"
 #include "engine/problem.hpp"
+#include "engine/simulation.hpp"
 
 namespace pdq {
 
 std::string restartPath(const std::string& dir, long step);
 std::string bondRestartPath(const std::string& dir, long step);
+std::string stateRestartPath(const std::string& dir, long step);
 
 class RestartOutput final : public Output {
  public:
@@ -29,8 +32,9 @@ class RestartOutput final : public Output {
 };
 
 // Replaces the problem's alterable attributes by those of the restart file `path` (every
-// particle must be there, and nothing else), sets the first step, and returns the bond
-// state from the companion Bonds.<step>.rst (empty if the model has no bonds).
-BondState readRestart(const std::string& path, Problem& problem);
+// particle must be there, and nothing else), sets the first step, and returns the bonds
+// of the companion Bonds.<step>.rst (none if the model has no bonds) and the state of
+// State.<step>.rst, for Simulation::restore.
+RestartState readRestart(const std::string& path, Problem& problem);
 
 }  // namespace pdq

@@ -41,10 +41,10 @@ Problem springProblem(bool shuffle, const std::string& dir) {
   return pb;
 }
 
-test::State runProblem(Problem pb, BondState* bonds = nullptr) {
+test::State runProblem(Problem pb, RestartState* bonds = nullptr) {
   Comm comm;
   Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
-  if (bonds) sim.restoreBonds(*bonds);
+  if (bonds) sim.restore(*bonds);
   addStandardOutputs(sim, pb.output);
   sim.run();
   return test::gatherState(sim);
@@ -58,7 +58,7 @@ void checkRestart(bool shuffle) {
   MPI_Barrier(MPI_COMM_WORLD);
   const test::State full = runProblem(springProblem(shuffle, dir));
   Problem again = springProblem(shuffle, dir + "_again");
-  BondState bonds = readRestart(restartPath(dir, 240), again);
+  RestartState bonds = readRestart(restartPath(dir, 240), again);
   EXPECT_EQ(again.run.firstStep, 240);
   EXPECT_FALSE(bonds.owner.empty());
   long dead = 0;

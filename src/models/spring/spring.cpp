@@ -1,6 +1,6 @@
 // The reference model: a lattice of point masses joined by linear springs that may break.
 // It is the guide to writing a model for pdq — read it top to bottom. Everything a model
-// does is here: parameters, attributes, setup of bonds, force, integration, output.
+// does is here: parameters, attributes, setup of bonds, force, masses, output.
 // The engine owns everything else (decomposition, ghosts, exchange, shuffle, files).
 #include <algorithm>
 #include <cmath>
@@ -95,21 +95,11 @@ class Spring final : public Model {
     }
   }
 
-  // 6. Integration (leapfrog form of velocity Verlet): kick, then drift. Owned only; the
-  //    engine then refreshes the ghosts' alterable attributes.
-  void integrate(Context& ctx) override {
-    Particles& P = ctx.particles;
-    const double h = ctx.dt();
-    const long n = static_cast<long>(P.owned());
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      double* x = P.alter(i);
-      const double* F = P.integ(i);
-      for (int a = 0; a < 3; ++a) {
-        x[VX + a] += F[FX + a] / mass_ * h;
-        x[X + a] += x[VX + a] * h;
-      }
-    }
+  // 6. Motion: the engine's integrator (velocity Verlet) moves the particles. The default
+  //    motion (positions x y z, velocities vx vy vz, forces fx fy fz, no rotation) is this
+  //    model's; it gives each owned particle its mass (and could give constraints and loads).
+  void bodies(const Context&, std::span<Body> owned) const override {
+    for (Body& b : owned) b.mass = mass_;
   }
 
   // 7. Output: per-particle damage (fraction of broken springs) and global energies,

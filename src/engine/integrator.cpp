@@ -1,0 +1,196 @@
+#include "engine/integrator.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "engine/context.hpp"
+#include "engine/model.hpp"
+
+namespace pdq {
+
+namespace {
+
+int column(const std::vector<std::string>& names, const std::string& name, const char* table) {
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (names[k] == name) return static_cast<int>(k);
+  throw std::logic_error(std::string("the model's motion names '") + name +
+                         "', which is not in its " + table + " attributes");
+}
+
+// q <- exp(φ/2) ⊗ q for the rotation vector φ (global frame), renormalised.
+void rotate(double* q[4], const double phi[3]) {
+  const double angle = std::sqrt(phi[0] * phi[0] + phi[1] * phi[1] + phi[2] * phi[2]);
+  const double c = std::cos(0.5 * angle);
+  // sin(angle/2)/angle, by its series where the quotient loses digits.
+  const double s = angle > 1e-4 ? std::sin(0.5 * angle) / angle : 0.5 - angle * angle / 48;
+  const double w = c, x = s * phi[0], y = s * phi[1], z = s * phi[2];
+  const double qw = *q[0], qx = *q[1], qy = *q[2], qz = *q[3];
+  double r[4] = {w * qw - x * qx - y * qy - z * qz, w * qx + x * qw + y * qz - z * qy,
+                 w * qy - x * qz + y * qw + z * qx, w * qz + x * qy - y * qx + z * qw};
+  const double norm = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
+  for (int k = 0; k < 4; ++k) *q[k] = r[k] / norm;
+}
+
+// The rotation vector of a unit quaternion (angle in [0, π] times the axis).
+void rotationVector(const double* q[4], double out[3]) {
+  const double vx = *q[1], vy = *q[2], vz = *q[3];
+  const double sv = std::sqrt(vx * vx + vy * vy + vz * vz);
+  const double sign = *q[0] < 0 ? -1.0 : 1.0;
+  const double f = sv > 0 ? 2 * std::atan2(sv, sign * *q[0]) / sv * sign : 2.0;
+  out[0] = f * vx;
+  out[1] = f * vy;
+  out[2] = f * vz;
+}
+
+}  // namespace
+
+void Integrator::resolve(const Schema& s) {
+  const Motion m = model_.motion();
+  if (m.position.size() != m.velocity.size() || m.position.size() != m.force.size() ||
+      m.position.size() > 3)
+    throw std::logic_error(
+        "the model's motion needs as many velocity and force columns as positions (at most 3)");
+  nT_ = static_cast<int>(m.position.size());
+  for (int d = 0; d < nT_; ++d) {
+    pos_[d] = column(s.alter, m.position[d], "alterable");
+    if (pos_[d] > 2) throw std::logic_error("the model's motion: positions are among x y z");
+    vel_[d] = column(s.alter, m.velocity[d], "alterable");
+    frc_[d] = column(s.integ, m.force[d], "integ");
+  }
+  rotation_ = m.rotation;
+  perMass_ = m.perMass;
+  damping_ = m.damping;
+  const std::size_t nq = m.rotation == Rotation::Spatial ? 4 : 1, nw = nq == 4 ? 3 : 1;
+  nR_ = m.rotation == Rotation::None ? 0 : static_cast<int>(nw);
+  if (nR_ &&
+      (m.orientation.size() != nq || m.angularVelocity.size() != nw || m.moment.size() != nw))
+    throw std::logic_error("the model's motion: wrong number of rotation columns");
+  for (int k = 0; k < nR_; ++k) {
+    vel_[nT_ + k] = column(s.alter, m.angularVelocity[k], "alterable");
+    frc_[nT_ + k] = column(s.integ, m.moment[k], "integ");
+  }
+  for (std::size_t k = 0; nR_ && k < nq; ++k)
+    quat_[k] = column(s.alter, m.orientation[k], "alterable");
+  if (rotation_ == Rotation::Planar) pos_[nT_] = quat_[0];
+  resolved_ = true;
+}
+
+void Integrator::setState(std::span<const double> s) {
+  if (s.size() != 1) throw std::logic_error("integrator state: one value expected");
+  holdDamping_ = s[0];
+}
+
+// The displacement of DOF d of owned particle i from its reference (rotations: the angle,
+// or the rotation vector's component).
+double Integrator::displacement(const Particles& P, std::size_t i, int d) const {
+  const double* a = P.alter(i);
+  if (d < nT_) return a[pos_[d]] - P.fixed(i)[pos_[d]];
+  if (rotation_ == Rotation::Planar) return a[pos_[d]];
+  const double* q[4] = {&a[quat_[0]], &a[quat_[1]], &a[quat_[2]], &a[quat_[3]]};
+  double phi[3];
+  rotationVector(q, phi);
+  return phi[d - nT_];
+}
+
+// 2 ζ_h ω₁, ω₁² = F·u / (u·M·u) the Rayleigh quotient of the current deflection under the
+// held loads (close to static by the end of a slow ramp); 0 without loads.
+double Integrator::rayleighDamping(Context& ctx, double factor) const {
+  const Particles& P = ctx.particles;
+  const int n = nT_ + nR_;
+  const double work = ctx.sumOwned([&](std::size_t i) {
+    double w = 0;
+    for (int d = 0; d < n; ++d) w += bodies_[i].load[d] * displacement(P, i, d);
+    return factor * w;
+  });
+  const double inertia = ctx.sumOwned([&](std::size_t i) {
+    double t = 0, r = 0;
+    for (int d = 0; d < nT_; ++d) t += displacement(P, i, d) * displacement(P, i, d);
+    for (int d = nT_; d < n; ++d) r += displacement(P, i, d) * displacement(P, i, d);
+    return bodies_[i].mass * t + bodies_[i].inertia * r;
+  });
+  if (!(work > 0 && inertia > 0)) return 0;
+  const double omega1 = std::sqrt(work / inertia);
+  const double ratio = ctx.loading().holdDampingRatio;
+  if (ctx.root())
+    ctx.log() << "loads held from step " << ctx.step() << "; Rayleigh frequency " << omega1
+              << " rad/s, hold damping " << 2 * ratio * omega1 << " 1/s\n";
+  return 2 * ratio * omega1;
+}
+
+void Integrator::step(Context& ctx) {
+  Particles& P = ctx.particles;
+  if (!resolved_) resolve(P.schema());
+  const std::size_t n = P.owned();
+  if (!haveBodies_ || bodies_.size() != n) {
+    bodies_.assign(n, Body{});
+    model_.bodies(ctx, bodies_);
+    for (const Body& b : bodies_)
+      for (int d = nT_; d < nT_ + nR_; ++d)
+        if (rotation_ == Rotation::Spatial && b.constraint[d] == Constraint::Resting)
+          throw std::logic_error("a spatial rotation cannot rest on a support");
+    haveBodies_ = true;
+  }
+  const Loading& L = ctx.loading();
+  const double h = ctx.dt();
+  // The first step of a run from step 0 starts from v(0): half a kick (velocity Verlet).
+  const double kick = ctx.step() == 1 ? 0.5 * h : h;
+  const double tNow = static_cast<double>(ctx.step() - 1) * h;
+  const double tNext = static_cast<double>(ctx.step()) * h;
+  const double fNow = L.factor(tNow), fNext = L.factor(tNext);
+  const bool held = L.held(tNow);
+  if (held && L.holdDampingRatio > 0 && holdDamping_ < 0) holdDamping_ = rayleighDamping(ctx, fNow);
+  const double c = damping_ + (held && holdDamping_ > 0 ? holdDamping_ : 0.0);
+  const int nLinear = nT_ + (rotation_ == Rotation::Planar ? 1 : 0);
+  const long nOwned = static_cast<long>(n);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < nOwned; ++i) {
+    double* a = P.alter(i);
+    const double* X = P.fixed(i);
+    const double* F = P.integ(i);
+    const Body& b = bodies_[i];
+    const double invM = 1 / b.mass, invI = 1 / b.inertia;
+    for (int d = 0; d < nLinear; ++d) {
+      const bool rot = d >= nT_;
+      const int p = pos_[d], v = vel_[d];
+      const double ref = rot ? 0.0 : X[p];
+      switch (b.constraint[d]) {
+        case Constraint::Prescribed: {
+          const double target = ref + b.value[d] * fNext;
+          a[v] = (target - a[p]) / h;
+          a[p] = target;
+          continue;
+        }
+        case Constraint::KeepVelocity:
+          break;
+        default: {
+          const double inv = rot ? invI : invM;
+          double acc = perMass_ && !rot ? F[frc_[d]] + b.load[d] * fNow * inv
+                                        : (F[frc_[d]] + b.load[d] * fNow) * inv;
+          acc -= c * a[v];
+          a[v] += acc * kick;
+        }
+      }
+      a[p] += a[v] * h;
+      if (b.constraint[d] == Constraint::Resting && a[p] < ref) {
+        a[p] = ref;  // on the support: no penetration, no bounce
+        a[v] = 0;
+      }
+    }
+    if (rotation_ != Rotation::Spatial) continue;
+    double phi[3];
+    for (int k = 0; k < 3; ++k) {
+      const int d = nT_ + k, v = vel_[d];
+      if (b.constraint[d] == Constraint::Prescribed) {
+        a[v] = b.value[d] * (fNext - fNow) / h;
+      } else if (b.constraint[d] == Constraint::Free) {
+        const double acc = (F[frc_[d]] + b.load[d] * fNow) * invI - c * a[v];
+        a[v] += acc * kick;
+      }
+      phi[k] = a[v] * h;
+    }
+    double* q[4] = {&a[quat_[0]], &a[quat_[1]], &a[quat_[2]], &a[quat_[3]]};
+    rotate(q, phi);
+  }
+}
+
+}  // namespace pdq

@@ -1,0 +1,113 @@
+#pragma once
+// The engine's time integrator, used by every model that does not override
+// Model::integrate: velocity Verlet in its leapfrog form for translations and rotations,
+//     v(n+½) = v(n−½) + a(n) Δt,   x(n+1) = x(n) + v(n+½) Δt,
+// started right: the first step of a run kicks by half a step, v(½) = v(0) + a(0) Δt/2, so
+// a run from given positions and velocities (at rest, or not) follows velocity Verlet
+// exactly, loads acting from step 0 included (LAMMPS's fix nve). The stored velocities are
+// therefore the half-step ones, except at step 0; a restarted run (first step > 0) reads
+// them as such.
+//
+// What a model declares (Model::motion, Model::bodies):
+//   * Motion: which alterable columns hold positions and velocities and which integ columns
+//     the forces, by name, and how rotations are stored: none; Planar (2D: one angle θ_z, its
+//     rate ω_z and the moment m_z); or Spatial (3D: a unit quaternion qw qx qy qz, the angular
+//     velocity ωx ωy ωz in the global frame, and the moments mx my mz).
+//   * Body per owned particle: mass, rotational inertia (isotropic, so a free rotation obeys
+//     dω/dt = M/I with no gyroscopic term), and per degree of freedom (translations first,
+//     then rotations) its constraint, its peak external load and its peak prescribed value.
+// Every external load and prescribed value follows the load protocol (Loading, owned by the
+// engine and set in the scenario's [loading] table): peak × factor(t), in simulated time.
+// Damping is mass-proportional: a −= c v, c = Motion::damping, plus 2 ζ_h ω₁ once the loads
+// are held (Loading::holdDampingRatio, ω₁ the Rayleigh frequency of the deflection under
+// the held loads, computed once and saved in restart files).
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "engine/schema.hpp"
+
+namespace pdq {
+
+class Context;
+class Model;
+class Particles;
+
+// The load protocol: loads rise linearly from 0 at t = 0 to `scale` at t = rampTime and are
+// then held (rampTime = 0: `scale` from the start). The run lasts `steps` (RunConfig) or,
+// when that is negative, rampTime + holdTime.
+struct Loading {
+  double scale = 1;             // peak load factor: multiplies every load and prescribed value
+  double rampTime = 0;          // s
+  double holdTime = 0;          // s, after the ramp (sets the run's length when steps < 0)
+  double holdDampingRatio = 0;  // ζ_h of mass-proportional damping once the loads are held
+  // The load factor at time t.
+  double factor(double t) const {
+    return rampTime > 0 && t < rampTime ? scale * (t / rampTime) : scale;
+  }
+  bool held(double t) const { return !(rampTime > 0 && t < rampTime); }
+};
+
+enum class Rotation { None, Planar, Spatial };
+
+struct Motion {
+  std::vector<std::string> position{"x", "y", "z"};  // alterable columns (among x y z)
+  std::vector<std::string> velocity{"vx", "vy", "vz"};
+  std::vector<std::string> force{"fx", "fy", "fz"};  // integ columns
+  // True when the force columns hold accelerations (force per unit mass, as peridynamic
+  // kernels produce); external loads are still forces.
+  bool perMass = false;
+  double damping = 0;  // mass-proportional damping c (1/s), at all times
+  Rotation rotation = Rotation::None;
+  // Planar: {"theta"}, {"omega"}, {"mz"}; Spatial: {"qw","qx","qy","qz"}, {"wx","wy","wz"},
+  // {"mx","my","mz"}.
+  std::vector<std::string> orientation, angularVelocity, moment;
+};
+
+enum class Constraint : std::uint8_t {
+  Free,
+  // The coordinate is the reference one plus value × factor(t) (a rotation: the angle; for
+  // Spatial rotations the angular velocity component follows the rate of value × factor).
+  Prescribed,
+  KeepVelocity,  // the velocity keeps its initial value (0: a support)
+  Resting,       // free, but never below the reference coordinate: a support that only pushes
+};
+
+struct Body {
+  double mass = 1, inertia = 1;
+  std::array<Constraint, 6> constraint{};  // translations, then rotations
+  std::array<double, 6> load{};            // peak external force or moment
+  std::array<double, 6> value{};           // peak prescribed displacement or rotation
+};
+
+class Integrator {
+ public:
+  explicit Integrator(Model& model) : model_(model) {}
+  // Advances the owned particles from step n−1 to step n = ctx.step(), with the forces of
+  // step n−1 in the integ table.
+  void step(Context& ctx);
+  // The owned particles changed (a shuffle): bodies are asked for again before the next step.
+  void particlesMoved() { haveBodies_ = false; }
+  // State kept between steps, saved in restart files.
+  std::vector<double> state() const { return {holdDamping_}; }
+  void setState(std::span<const double> s);
+
+ private:
+  void resolve(const Schema& schema);
+  double displacement(const Particles& P, std::size_t i, int dof) const;
+  double rayleighDamping(Context& ctx, double factor) const;
+
+  Model& model_;
+  bool resolved_ = false, haveBodies_ = false, perMass_ = false;
+  Rotation rotation_ = Rotation::None;
+  double damping_ = 0;
+  int nT_ = 0, nR_ = 0;
+  std::array<int, 6> pos_{}, vel_{}, frc_{};  // per DOF (a planar angle is a position)
+  std::array<int, 4> quat_{};                 // orientation columns
+  std::vector<Body> bodies_;
+  double holdDamping_ = -1;  // 2 ζ_h ω₁ once computed
+};
+
+}  // namespace pdq
