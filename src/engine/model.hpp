@@ -83,7 +83,9 @@ class Model {
   virtual std::vector<std::string> fields() const { return {}; }
   virtual void field(const Context&, int /*k*/, std::span<double> /*ownedValues*/) const {}
   // Global quantities for the history file (load, displacement, energies); called on
-  // every rank at output steps, so they may use the context's reductions.
+  // every rank at output steps, so they may use the context's reductions. Every model
+  // names its potential energy at the current positions (and rotations) "potential": its
+  // forces and moments are minus its gradient (tests/conformance checks it).
   virtual std::vector<std::string> globals() const { return {}; }
   virtual std::vector<double> globalValues(Context&) { return {}; }
   // Declared by models that support `pdq strength` (see StrengthSpec); the classifier may

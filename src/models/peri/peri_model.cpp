@@ -161,7 +161,7 @@ void PeriModel::field(const Context& ctx, int k, std::span<double> out) const {
 }
 
 std::vector<std::string> PeriModel::globals() const {
-  return {"kinetic", "elastic", "broken_bonds"};
+  return {"kinetic", "potential", "broken_bonds"};
 }
 
 std::vector<double> PeriModel::globalValues(Context& ctx) {

@@ -114,7 +114,9 @@ class Spring final : public Model {
       out[i] = n ? broken / n : 0.0;
     }
   }
-  std::vector<std::string> globals() const override { return {"kinetic", "broken_bonds"}; }
+  std::vector<std::string> globals() const override {
+    return {"kinetic", "broken_bonds", "potential"};
+  }
   std::vector<double> globalValues(Context& ctx) override {
     const Particles& P = ctx.particles;
     const double ke = ctx.sumOwned([&](std::size_t i) {
@@ -127,7 +129,22 @@ class Spring final : public Model {
         s += ctx.bonds.alive(b) ? 0 : 1;
       return s;
     });
-    return {ke, broken / 2};
+    // ½ k (len − len0)² per intact spring, half of it on each of its two particles.
+    const double pe = ctx.sumOwned([&](std::size_t i) {
+      const double* xi = P.alter(i);
+      const double* Xi = P.fixed(i);
+      double e = 0;
+      for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
+        if (!ctx.bonds.alive(b)) continue;
+        const double* xj = P.alter(ctx.bonds.partner(b));
+        const double* Xj = P.fixed(ctx.bonds.partner(b));
+        const double len = std::sqrt(sq(xj[X] - xi[X]) + sq(xj[Y] - xi[Y]) + sq(xj[Z] - xi[Z]));
+        const double len0 = std::sqrt(sq(Xj[0] - Xi[0]) + sq(Xj[1] - Xi[1]) + sq(Xj[2] - Xi[2]));
+        e += 0.25 * k_ * sq(len - len0);
+      }
+      return e;
+    });
+    return {ke, broken / 2, pe};
   }
 
  private:

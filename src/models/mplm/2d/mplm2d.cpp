@@ -190,8 +190,8 @@ class Mplm2d final : public Model {
   }
 
   std::vector<std::string> globals() const override {
-    return {"load_factor", "load_x",     "load_y",  "ux",      "uy",
-            "reaction_x",  "reaction_y", "kinetic", "damaged", "broken"};
+    return {"load_factor", "load_x",  "load_y",  "ux",     "uy",       "reaction_x",
+            "reaction_y",  "kinetic", "damaged", "broken", "potential"};
   }
   std::vector<double> globalValues(Context& ctx) override {
     const Particles& P = ctx.particles;
@@ -238,7 +238,8 @@ class Mplm2d final : public Model {
             ry,
             ke,
             countBonds(std::numeric_limits<double>::min()),
-            countBonds(1.0)};
+            countBonds(1.0),
+            potential(ctx)};
   }
 
  private:
@@ -297,6 +298,28 @@ class Mplm2d final : public Model {
     k.c = dampingCoefficient(par_.zeta, k.ka, massOf(fi), massOf(fj));
     k.cr = dampingCoefficient(par_.zetaRotation, 4 * k.kb, inertiaOf(fi), inertiaOf(fj));
     return k;
+  }
+
+  // The strain energy of the lattice at its current damage (each interaction is held by
+  // both of its particles: half on each).
+  double potential(const Context& ctx) const {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    const bool corot = par_.kinematics == "corotational";
+    return ctx.sumOwned([&](std::size_t i) {
+      const double* a = P.alter(i);
+      double e = 0;
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const Interaction& k = inter_[b];
+        const double* aj = P.alter(k.j);
+        const double rx = aj[AX] - a[AX], ry = aj[AY] - a[AY];
+        const Chord ch = corot ? corotChord(k, rx, ry, std::cos(a[THETA]), std::sin(a[THETA]),
+                                            std::cos(aj[THETA]), std::sin(aj[THETA]))
+                               : smallChord(k, rx - k.r0x, ry - k.r0y, a[THETA], aj[THETA]);
+        e += 0.5 * elasticEnergy(k, ch, par_.law, B.attr(b));
+      }
+      return e;
+    });
   }
 
   // ω_max of the undamaged lattice in small deformation (eq. 4.3), DOFs u_x, u_y, θ_z.
