@@ -127,10 +127,25 @@ nz = 3
 spacing = 0.97
 )",
                          0.03);
+    // fcc at nearest-neighbour distance s = 0.02: density 4 / (s √2)³.
+    d["mplm3d"] = problem(R"([model]
+name = "mplm3d"
+spacing = 0.02
+dt = 1.0e-6
+[particles]
+generator = "fcc"
+cells = [3, 3, 2]
+density = 176776.69529663686
+)",
+                          2e-5);
     return d;
   }();
   return problems;
 }
+
+// Models that do not give their potential energy yet. Every other check runs on them; the
+// gradient check fails as soon as one declares "potential", so that it joins that check.
+const std::set<std::string> withoutPotentialYet = {"mplm3d"};
 
 int worldRank() {
   int r = 0;
@@ -212,6 +227,11 @@ void checkGradient(const std::string& name, const Declared& d) {
     dofs.push_back({schema.alterIndex("theta"), schema.integIndex(d.moment), 1e-4 * d.turn});
   }
   auto names = model.globals();
+  if (withoutPotentialYet.count(name)) {
+    EXPECT_EQ(std::find(names.begin(), names.end(), "potential"), names.end())
+        << name << " now declares \"potential\": remove it from withoutPotentialYet";
+    return;
+  }
   ASSERT_NE(std::find(names.begin(), names.end(), "potential"), names.end())
       << name << " declares no global \"potential\" (its potential energy)";
 
