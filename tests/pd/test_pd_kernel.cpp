@@ -67,9 +67,10 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
 TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> u(-1, 1);
-  const std::size_t nA = 7, particles = 64;
-  std::vector<double> x(particles * nA);
+  const std::size_t nA = 6, particles = 64;
+  std::vector<double> x(particles * nA), theta(particles);
   for (auto& v : x) v = 3 * u(rng);
+  for (auto& v : theta) v = u(rng);
   std::size_t broken = 0;
   for (double sc : {0.0, 0.05}) {
     for (std::size_t nb = 0; nb < 40; ++nb) {
@@ -85,9 +86,9 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
       }
       std::vector<double> attrB = attr;
       Bonds fastBonds = bondsOfOne(3, nb), portableBonds = bondsOfOne(3, nb);
-      const LpsView fastView{partner.data(), attr.data(), x.data(),  nA, 6, 1.5,
+      const LpsView fastView{partner.data(), attr.data(), x.data(),  nA, theta.data(), 1.5,
                              -0.7,           sc,          &fastBonds};
-      const LpsView portableView{partner.data(), attrB.data(), x.data(),      nA, 6, 1.5,
+      const LpsView portableView{partner.data(), attrB.data(), x.data(),      nA, theta.data(), 1.5,
                                  -0.7,           sc,           &portableBonds};
       const double d1 = lpsKernels().dilatation(fastView, 0, 0, nb);
       const double d2 = lpsKernelsPortable().dilatation(portableView, 0, 0, nb);
