@@ -303,23 +303,26 @@ class Mplm2d final : public Model {
   // The strain energy of the lattice at its current damage (each interaction is held by
   // both of its particles: half on each).
   double potential(const Context& ctx) const {
-    const Particles& P = ctx.particles;
     const Bonds& B = ctx.bonds;
-    const bool corot = par_.kinematics == "corotational";
     return ctx.sumOwned([&](std::size_t i) {
-      const double* a = P.alter(i);
       double e = 0;
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const Interaction& k = inter_[b];
-        const double* aj = P.alter(k.j);
-        const double rx = aj[AX] - a[AX], ry = aj[AY] - a[AY];
-        const Chord ch = corot ? corotChord(k, rx, ry, std::cos(a[THETA]), std::sin(a[THETA]),
-                                            std::cos(aj[THETA]), std::sin(aj[THETA]))
-                               : smallChord(k, rx - k.r0x, ry - k.r0y, a[THETA], aj[THETA]);
-        e += 0.5 * elasticEnergy(k, ch, par_.law, B.attr(b));
-      }
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b)
+        e += 0.5 *
+             elasticEnergy(inter_[b], chordAt(ctx.particles, i, inter_[b]), par_.law, B.attr(b));
       return e;
     });
+  }
+
+  // The deformation of interaction k of particle i now, for outputs (the force loop uses
+  // the cos and sin of the step instead).
+  Chord chordAt(const Particles& P, std::size_t i, const Interaction& k) const {
+    const double* a = P.alter(i);
+    const double* aj = P.alter(k.j);
+    const double rx = aj[AX] - a[AX], ry = aj[AY] - a[AY];
+    if (par_.kinematics == "corotational")
+      return corotChord(k, rx, ry, std::cos(a[THETA]), std::sin(a[THETA]), std::cos(aj[THETA]),
+                        std::sin(aj[THETA]));
+    return smallChord(k, rx - k.r0x, ry - k.r0y, a[THETA], aj[THETA]);
   }
 
   // ω_max of the undamaged lattice in small deformation (eq. 4.3), DOFs u_x, u_y, θ_z.
@@ -458,16 +461,13 @@ class Mplm2d final : public Model {
   std::array<double, 3> stress(const Context& ctx, std::size_t i) const {
     const Particles& P = ctx.particles;
     const Bonds& B = ctx.bonds;
-    const bool corot = par_.kinematics == "corotational";
     const double* a = P.alter(i);
     double sxx = 0, syy = 0, sxy = 0;
     for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
       const Interaction& k = inter_[b];
       const double* aj = P.alter(k.j);
       const double rx = aj[AX] - a[AX], ry = aj[AY] - a[AY];
-      const Chord ch = corot ? corotChord(k, rx, ry, std::cos(a[THETA]), std::sin(a[THETA]),
-                                          std::cos(aj[THETA]), std::sin(aj[THETA]))
-                             : smallChord(k, rx - k.r0x, ry - k.r0y, a[THETA], aj[THETA]);
+      const Chord ch = chordAt(P, i, k);
       double state[N_BOND];
       std::copy_n(B.attr(b), N_BOND, state);
       const EndLoad e = elasticForce(k, ch, par_.law, state, false);
