@@ -348,10 +348,10 @@ void checkRestart(const std::string& name, const Declared& d) {
   }
   {
     Problem pb = problemFor(name, d, dir + "_again");
-    BondState bonds = readRestart(restartPath(dir, at), pb);
+    RestartState saved = readRestart(restartPath(dir, at), pb);
     EXPECT_EQ(pb.run.firstStep, at);
     Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
-    sim.restoreBonds(std::move(bonds));
+    sim.restore(std::move(saved));
     sim.run();
     resumed = test::gatherState(sim);
   }
