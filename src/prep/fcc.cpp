@@ -87,6 +87,14 @@ FccBox makeFcc(const FccSpec& s, ParticleSet& out) {
 
 double closePackedLayerPitch(double s) { return std::sqrt(2.0 / 3.0) * s; }
 
+std::array<double, 3> closePackedMinimumBox(const ClosePacked& L) {
+  std::array<double, 3> need{};
+  need[L.bondAxis] = L.s;
+  need[3 - L.bondAxis - L.stackAxis] = std::sqrt(3.0) / 2 * L.s;
+  need[L.stackAxis] = closePackedLayerPitch(L.s);
+  return need;
+}
+
 std::vector<std::array<double, 3>> closePackedBox(const ClosePacked& L,
                                                   const std::array<double, 3>& size,
                                                   const std::array<double, 3>& origin) {
@@ -97,14 +105,12 @@ std::vector<std::array<double, 3>> closePackedBox(const ClosePacked& L,
   const int c = 3 - a - z;  // across the rows, within a layer
   const double s = L.s, p = std::sqrt(3.0) / 2 * s, h = closePackedLayerPitch(s);
   const char* names[3] = {"X", "Y", "Z"};
-  const double need[3] = {s, p, h};
-  const int axes[3] = {a, c, z};
+  const auto need = closePackedMinimumBox(L);
   for (int k = 0; k < 3; ++k)
-    if (!(size[axes[k]] + 1e-9 * s >= need[k]))
-      throw std::invalid_argument(
-          "the lattice does not fit the box: " + std::to_string(size[axes[k]]) + " m along " +
-          names[axes[k]] + " is less than the lattice's stride " + std::to_string(need[k]) +
-          " m there (two particles at least)");
+    if (!(size[k] + 1e-9 * s >= need[k]))
+      throw std::invalid_argument("the lattice does not fit the box: " + std::to_string(size[k]) +
+                                  " m along " + names[k] + " is less than the lattice's stride " +
+                                  std::to_string(need[k]) + " m there (two particles at least)");
   const double tol = 1e-9 * s;
   std::vector<std::array<double, 3>> pts;
   for (long k = 0; k * h <= size[z] + tol; ++k) {

@@ -51,6 +51,9 @@ struct ClosePacked {
 std::vector<std::array<double, 3>> closePackedBox(const ClosePacked& lattice,
                                                   const std::array<double, 3>& size,
                                                   const std::array<double, 3>& origin = {0, 0, 0});
+// The smallest box the lattice fits (two particles along every axis): s along the bonds,
+// (√3/2)s across the rows, √(2/3)s along the stacking.
+std::array<double, 3> closePackedMinimumBox(const ClosePacked& lattice);
 // Distance between close-packed layers, √(2/3) s.
 double closePackedLayerPitch(double s);
 

@@ -149,6 +149,9 @@ Generated readParticles(const toml::table& root, const std::string& file, Scenar
     const auto& gen = GeneratorRegistry::get(name->text, file, name->line);
     Params gp =
         tableParams(*t, file, "generator '" + name->text + "' ([particles])", {"generator", "set"});
+    // The generator's own errors name the generator's line.
+    gp.set("generator", name->text, file, name->line);
+    gp.accept("generator");
     g = gen(gp, schema, sc.modelParams);
     gp.checkAllUsed();
     sc.generator = name->text;
