@@ -15,6 +15,7 @@
 #include <stdexcept>
 
 #include "engine/error.hpp"
+#include "engine/exact_sum.hpp"
 #include "engine/model.hpp"
 #include "models/mplm/3d/attributes.hpp"
 #include "models/mplm/3d/elastic_constants.hpp"
@@ -210,6 +211,12 @@ class Mplm3d final : public Model {
       }
       out[i] = v;
     }
+  }
+
+  StrengthSpec strengthSpec() override {
+    return {"load_factor", {"ux", "uy", "uz"}, "broken", [this](Context& ctx) {
+              return failureMode(ctx);
+            }};
   }
 
   std::vector<std::string> globals() const override {
@@ -408,6 +415,56 @@ class Mplm3d final : public Model {
                 << omega1 << " rad/s, hold damping " << 2 * par_.holdDampingRatio * omega1
                 << " 1/s\n";
     return 2 * par_.holdDampingRatio * omega1;
+  }
+
+  // How the member failed, from its interactions damaged past ω = 0.5: "compression" when
+  // crushing dominates; else, with supports at both ends, "flexural" when most lie in the
+  // middle third between them and "shear" otherwise; a member held at one end only (a
+  // cantilever) fails "flexural" when most lie within one depth of the support, else "shear";
+  // "tension" with no supports.
+  std::string failureMode(Context& ctx) const {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    constexpr double huge = std::numeric_limits<double>::max();
+    double lo = huge, hi = -huge, ylo = huge, yhi = -huge, xlo = huge, xhi = -huge;
+    for (std::size_t i = 0; i < P.owned(); ++i) {
+      const double* X = P.fixed(i);
+      xlo = std::min(xlo, X[FX_X]);
+      xhi = std::max(xhi, X[FX_X]);
+      ylo = std::min(ylo, X[FX_Y]);
+      yhi = std::max(yhi, X[FX_Y]);
+      if (constraint_[i] != 0) {
+        lo = std::min(lo, X[FX_X]);
+        hi = std::max(hi, X[FX_X]);
+      }
+    }
+    lo = ctx.min(lo);
+    hi = ctx.max(hi);
+    xlo = ctx.min(xlo);
+    xhi = ctx.max(xhi);
+    const double depth = ctx.max(yhi) - ctx.min(ylo);
+    const bool supported = lo <= hi, bothEnds = supported && hi - lo > (xhi - xlo) / 2;
+    ExactSum tensile, compressive, critical, all;
+    for (std::size_t i = 0; i < P.owned(); ++i) {
+      if (isSteel(P.fixed(i))) continue;
+      const double x = P.fixed(i)[FX_X];
+      const bool inZone = bothEnds
+                              ? std::fabs(x - (lo + hi) / 2) < (hi - lo) / 6
+                              : supported && std::min(std::fabs(x - lo), std::fabs(x - hi)) < depth;
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const double* st = B.attr(b);
+        if (std::max(st[OMEGA_T], st[OMEGA_C]) < 0.5) continue;
+        (st[OMEGA_C] >= st[OMEGA_T] ? compressive : tensile).add(1);
+        all.add(1);
+        if (inZone) critical.add(1);
+      }
+    }
+    const double t = ctx.sum(tensile), c = ctx.sum(compressive), m = ctx.sum(critical);
+    const double total = ctx.sum(all);
+    if (total == 0) return "none";
+    if (c > t) return "compression";
+    if (!supported) return "tension";
+    return m > total / 2 ? "flexural" : "shear";
   }
 
   // Load factor at a step: linear up to rampFraction of the run, then held.
