@@ -50,6 +50,7 @@ inline void referenceFrame(const Vec& n0, Vec& e2, Vec& e3) {
 struct Chord {
   double da, invL;
   Vec ti, tj;
+  Vec e2, e3;  // the reference frame's second and third axes
   Quat frame;
   bool rotated;
 };
@@ -66,6 +67,8 @@ inline Chord smallChord(const Interaction& k, const Vec& d, const Vec& thi, cons
           k.invL0,
           {dot(bi, k.n0), dot(bi, e2), dot(bi, e3)},
           {dot(bj, k.n0), dot(bj, e2), dot(bj, e3)},
+          e2,
+          e3,
           {1, 0, 0, 0},
           false};
 }
@@ -93,6 +96,8 @@ inline Chord corotChord(const Interaction& k, const Vec& r, const Quat& qi, cons
           invL,
           {dot(vi, k.n0), dot(vi, e2), dot(vi, e3)},
           {dot(vj, k.n0), dot(vj, e2), dot(vj, e3)},
+          e2,
+          e3,
           qb,
           true};
 }
@@ -138,8 +143,8 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::D
   const double T = k.kt * bendKeep * (tj[0] - ti[0]);
   // Local components on i: force (N, −(Mz_i+Mz_j)/L, (My_i+My_j)/L), moment (T, −My_i, −Mz_i).
   const double f2 = -(Mzi + Mzj) * ch.invL, f3 = (Myi + Myj) * ch.invL;
-  Vec e2, e3;
-  referenceFrame(k.n0, e2, e3);
+  const Vec& e2 = ch.e2;
+  const Vec& e3 = ch.e3;
   Vec f, m;
   for (int d = 0; d < 3; ++d) {
     f[d] = N * k.n0[d] + f2 * e2[d] + f3 * e3[d];

@@ -36,6 +36,7 @@ class Mplm3d final : public Model {
  public:
   void configure(const Params& p) override {
     par_.read(p);
+    corot_ = par_.kinematics == "corotational";
     if (par_.fractureEnergy > 0)
       throw InputError(p.owner(), 0,
                        "fracture_energy is not available in 3D: give tensile_ratio (alpha_t)");
@@ -107,9 +108,8 @@ class Mplm3d final : public Model {
   void force(Context& ctx) override {
     Particles& P = ctx.particles;
     Bonds& B = ctx.bonds;
-    const bool corot = par_.kinematics == "corotational";
     const long n = static_cast<long>(P.owned());
-    if (corot) orientations(P);
+    if (corot_) orientations(P);
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
       const double* a = P.alter(i);
@@ -192,7 +192,7 @@ class Mplm3d final : public Model {
   void field(const Context& ctx, int k, std::span<double> out) const override {
     const Particles& P = ctx.particles;
     const Bonds& B = ctx.bonds;
-    if (k >= 9 && par_.kinematics == "corotational") orientations(P);
+    if (k >= 9 && corot_) orientations(P);
     for (std::size_t i = 0; i < out.size(); ++i) {
       const double* a = P.alter(i);
       const double* X = P.fixed(i);
@@ -336,7 +336,7 @@ class Mplm3d final : public Model {
                double* state, bool update) const {
     const Vec r{aj[AX] - a[AX], aj[AY] - a[AY], aj[AZ] - a[AZ]};
     Chord ch;
-    if (par_.kinematics == "corotational") {
+    if (corot_) {
       ch = corotChord(k, r, q_[i], q_[static_cast<std::size_t>(k.j)]);
     } else {
       const Vec d{r[0] - k.r0[0], r[1] - k.r0[1], r[2] - k.r0[2]};
@@ -504,6 +504,7 @@ class Mplm3d final : public Model {
   }
 
   mplm::Parameters par_;
+  bool corot_ = true;  // kinematics = "corotational"
   ElasticConstants k_;
   std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
   mutable std::vector<Quat> q_;     // orientation per local particle (co-rotational form)
