@@ -3,7 +3,7 @@
 # Usage: tools/install-deps.sh [build|test|viz]   (test adds the peers; viz adds ParaView)
 set -euo pipefail
 need=(cmake g++ make pkg-config libopenmpi-dev openmpi-bin libcli11-dev libtomlplusplus-dev
-      libfmt-dev libeigen3-dev libgtest-dev libbenchmark-dev libcairo2-dev)
+      libfmt-dev libgtest-dev libcairo2-dev)
 case "${1:-build}" in
   test) need+=(lammps) ;;
   viz) need+=(lammps paraview python3-paraview) ;;

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Speed goals of issue 4, timed through `pdq run` on the example scenario files as they are:
+# Speed goals, timed through `pdq run` on the example scenario files as they are:
 # the §4.4.4 beam (80 000 steps) on one core in under 10 s, and the 4.06 m beam of §4.4.6
 # (45 000 steps) on 2 ranks in under a minute. Wall-clock time of the whole command
 # (start-up, power iteration, outputs included), and the force phase from timing.out.

@@ -3,6 +3,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/summary.hpp"
+#include "io/standard_outputs.hpp"
 #include "scenario/scenario.hpp"
 
 namespace pdq::cli {
@@ -11,15 +12,15 @@ void infoCommand(const InfoOptions& o) {
   Comm comm(MPI_COMM_WORLD);
   Scenario sc = loadScenario(o.input);
   Problem& pb = sc.problem;
-  const std::string modelName = pb.modelName;
-  RunConfig cfg = pb.run;
-  cfg.outDir.assign(1, '.');  // setup creates the output folder; info writes nothing
-  Simulation sim(std::move(pb.model), std::move(pb.particles), cfg, comm);
-  sim.setup();
-  const std::string text = summary(sim, modelName, o.input, o.ranks);
+  const std::string modelName = pb.modelName, outDir = pb.run.outDir;
+  pb.run.outDir.assign(1, '.');  // setup creates the output folder; info writes nothing
+  pb.output = {.finalRestart = false};
+  const auto sim = makeSimulation(std::move(pb), comm);
+  sim->setup();
+  const std::string text = summary(*sim, modelName, o.input, o.ranks);
   if (comm.root()) {
     std::printf("%s", text.c_str());
-    std::printf("output        %s\n", pb.run.outDir.c_str());
+    std::printf("output        %s\n", outDir.c_str());
   }
 }
 

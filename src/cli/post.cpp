@@ -11,6 +11,7 @@
 #include "cli/options.hpp"
 #include "engine/error.hpp"
 #include "io/restart.hpp"
+#include "io/standard_outputs.hpp"
 #include "post/line_plot.hpp"
 #include "post/picture_output.hpp"
 #include "post/snapshot.hpp"
@@ -53,7 +54,7 @@ void pictureCommand(const PictureCommandOptions& o) {
   const std::string restart = o.restart.empty() ? latestRestart(pb.run.outDir, o.input) : o.restart;
   // Any step may be drawn, also from a run longer than the scenario's (a strength trial).
   pb.run.steps = std::numeric_limits<long>::max();
-  RestartState bonds = readRestart(restart, pb);
+  pb.restart = readRestart(restart, pb);
   // The picture options: the scenario's [output.picture] table, then --set items.
   Params table = pb.output.picture ? *pb.output.picture : Params("picture options");
   setFromCommandLine(table, o.set);
@@ -65,12 +66,12 @@ void pictureCommand(const PictureCommandOptions& o) {
   post::checkRequest(opt.request, post::quantityNames(schema, *pb.model), bondNames);
   // Set up (bonds, fields) at the restart's step without stepping, so the picture is
   // the one the run would have drawn at that step.
-  RunConfig cfg = pb.run;
-  cfg.steps = cfg.firstStep;
-  cfg.outDir.assign(1, '.');
   const std::string outDir = pb.run.outDir;
-  Simulation sim(std::move(pb.model), std::move(pb.particles), cfg, comm);
-  sim.restore(std::move(bonds));
+  pb.run.steps = pb.run.firstStep;
+  pb.run.outDir.assign(1, '.');
+  pb.output = {.finalRestart = false};
+  const auto simulation = makeSimulation(std::move(pb), comm);
+  Simulation& sim = *simulation;
   sim.setup();
   const post::Snapshot snap = post::gatherSnapshot(sim.context(), sim.model(), comm, sim.step());
   if (comm.root()) {

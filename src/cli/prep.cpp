@@ -12,8 +12,8 @@ namespace pdq::cli {
 void prepCommand(const PrepOptions& o) {
   Comm comm(MPI_COMM_WORLD);
   Scenario sc = readScenario(o.input);
-  // pdQInput.dat always states the cell size (the scenario's default is the horizon).
-  if (sc.problem.run.minCellSize <= 0) sc.problem.run.minCellSize = sc.problem.model->horizon();
+  // pdQInput.dat always states the cell size: the scenario's default is the model's own.
+  if (sc.problem.run.minCellSize <= 0) sc.problem.run.minCellSize = sc.problem.model->minCellSize();
   if (comm.root()) {
     writeThesisInput(o.out, sc.problem, sc.modelParams);
     std::printf(

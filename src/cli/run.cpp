@@ -19,15 +19,13 @@ void runCommand(const RunOptions& o) {
   Problem& pb = sc.problem;
   if (!o.out.empty()) pb.run.outDir = o.out;
   if (o.steps >= 0) pb.run.steps = o.steps;
-  RestartState bonds;
-  if (!o.restart.empty()) bonds = readRestart(o.restart, pb);
+  if (!o.restart.empty()) pb.restart = readRestart(o.restart, pb);
   const double particles = static_cast<double>(pb.particles.size());
   const std::string modelName = pb.modelName;
-  Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
-  if (!o.restart.empty()) sim.restore(std::move(bonds));
-  addStandardOutputs(sim, pb.output);
-  const bool talk = comm.root() && o.verbosity != Verbosity::Quiet;
+  const auto simulation = makeSimulation(std::move(pb), comm);
+  Simulation& sim = *simulation;
   sim.setup();
+  const bool talk = comm.root() && o.verbosity != Verbosity::Quiet;
   const std::string about = summary(sim, modelName, o.input);
   if (talk && o.verbosity == Verbosity::Verbose) std::printf("%s", about.c_str());
   // Under mpirun the ranks' output may be a pseudo-terminal whatever mpirun's own output

@@ -103,6 +103,14 @@ struct ModelRegistry : Registry<ModelFactory> {
                                        int line = 0) {
     return get(name, source, line)();
   }
+  // ... and configured with `params`, every one of which it must read (InputError otherwise).
+  static std::unique_ptr<Model> create(const std::string& name, const Params& params,
+                                       const std::string& source = "", int line = 0) {
+    auto model = create(name, source, line);
+    model->configure(params);
+    params.checkAllUsed();
+    return model;
+  }
 };
 
 }  // namespace pdq

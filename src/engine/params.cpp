@@ -2,11 +2,18 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 
 #include "engine/error.hpp"
 
 namespace pdq {
+
+std::string numberText(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
 
 void Params::set(const std::string& key, std::string text, std::string file, int line) {
   values_[key] = Value{std::move(text), std::move(file), line};

@@ -10,6 +10,10 @@
 
 namespace pdq {
 
+// A number as text that reads back as the same double (%.17g): how numbers are written into
+// parameters, input files and tables.
+std::string numberText(double v);
+
 class Params {
  public:
   struct Value {

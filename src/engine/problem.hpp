@@ -1,8 +1,11 @@
 #pragma once
 // A problem ready to run: which model with which parameters, every particle, the engine's
 // run configuration and the outputs wanted. Both input forms produce one: the thesis's
-// .dat files (io/thesis_input.hpp) and TOML scenario files (scenario/scenario.hpp).
+// .dat files (io/thesis_input.hpp) and TOML scenario files (scenario/scenario.hpp); code
+// that builds its particles itself (tests, studies) calls makeProblem. makeSimulation
+// (io/standard_outputs.hpp) turns any of them into a running Simulation.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,10 +20,10 @@ struct OutputSettings {
   long restartEvery = 0;     // ParticleAlterAttrs.<step>.rst (+ Bonds.<step>.rst)
   bool finalRestart = true;  // also at the last step
   long historyEvery = 0;     // timehist.dat rows for historyIds
-  std::vector<Gid> historyIds;
-  long globalsEvery = 0;             // history.csv: the model's global values
-  std::unique_ptr<Params> paraview;  // [output.paraview] table, if any (io/vtu_output.hpp)
-  std::unique_ptr<Params> picture;   // [output.picture] table, if any (post/picture_output.hpp)
+  std::vector<Gid> historyIds{};
+  long globalsEvery = 0;               // history.csv: the model's global values
+  std::unique_ptr<Params> paraview{};  // [output.paraview] table, if any (io/vtu_output.hpp)
+  std::unique_ptr<Params> picture{};   // [output.picture] table, if any (post/picture_output.hpp)
 };
 
 struct Problem {
@@ -30,6 +33,12 @@ struct Problem {
   ParticleSet particles;
   RunConfig run;
   OutputSettings output;
+  std::optional<RestartState> restart;  // from a restart file: restored at set-up
 };
+
+// Model `modelName` created and configured with `params` (every one of which it must read),
+// on `particles`, with no outputs unless asked for.
+Problem makeProblem(const std::string& modelName, const Params& params, ParticleSet particles,
+                    RunConfig run = {});
 
 }  // namespace pdq

@@ -9,12 +9,6 @@
 
 namespace pdq {
 
-static std::string num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 TimeHistoryOutput::TimeHistoryOutput(long every, std::vector<Gid> ids)
     : Output(every), ids_(std::move(ids)) {
   std::sort(ids_.begin(), ids_.end());
@@ -37,9 +31,9 @@ void TimeHistoryOutput::write(OutputContext& out) {
   const auto all = gatherSortedRows(out.comm, rows, 1 + nA);
   if (!out.comm.root()) return;
   for (std::size_t r = 0; r < all.size() / (1 + nA); ++r) {
-    text_ += std::to_string(out.step) + " " + num(out.ctx.time()) + " " +
+    text_ += std::to_string(out.step) + " " + numberText(out.ctx.time()) + " " +
              std::to_string(static_cast<Gid>(all[r * (1 + nA)]));
-    for (int c = 0; c < nA; ++c) text_ += " " + num(all[r * (1 + nA) + 1 + c]);
+    for (int c = 0; c < nA; ++c) text_ += " " + numberText(all[r * (1 + nA) + 1 + c]);
     text_ += "\n";
   }
 }
@@ -58,8 +52,8 @@ void GlobalsOutput::write(OutputContext& out) {
     for (const auto& n : out.model.globals()) text_ += "," + n;
     text_ += "\n";
   }
-  text_ += std::to_string(out.step) + "," + num(out.ctx.time());
-  for (double x : v) text_ += "," + num(x);
+  text_ += std::to_string(out.step) + "," + numberText(out.ctx.time());
+  for (double x : v) text_ += "," + numberText(x);
   text_ += "\n";
 }
 

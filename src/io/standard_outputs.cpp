@@ -7,6 +7,14 @@
 
 namespace pdq {
 
+std::unique_ptr<Simulation> makeSimulation(Problem pb, Comm& comm) {
+  auto sim = std::make_unique<Simulation>(std::move(pb.model), std::move(pb.particles),
+                                          std::move(pb.run), comm);
+  if (pb.restart) sim->restore(std::move(*pb.restart));
+  addStandardOutputs(*sim, pb.output);
+  return sim;
+}
+
 void addStandardOutputs(Simulation& sim, const OutputSettings& o) {
   if (o.restartEvery > 0 || o.finalRestart)
     sim.addOutput(std::make_unique<RestartOutput>(o.restartEvery, o.finalRestart));

@@ -40,12 +40,6 @@ Gid toGid(double v, const std::string& path, int line) {
   return static_cast<Gid>(v);
 }
 
-std::string fmt17(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 }  // namespace
 
 ParticleSet readParticleFiles(const std::string& fixedPath, const std::string& alterPath,
@@ -156,13 +150,11 @@ Problem readThesisInput(const std::string& dir) {
   const auto name = modelParams.raw("model");
   if (!name) throw InputError(user, 0, "missing 'model NAME' line");
   pb.modelName = name->text;
-  pb.model = ModelRegistry::create(pb.modelName, user, name->line);
-  pb.model->configure(modelParams);
-  modelParams.checkAllUsed();
+  pb.model = ModelRegistry::create(pb.modelName, modelParams, user, name->line);
   if (pb.run.minCellSize < pb.model->horizon())
     throw InputError(input, cellLine,
-                     "the minimum cell size " + fmt17(pb.run.minCellSize) +
-                         " is below the model's horizon " + fmt17(pb.model->horizon()) +
+                     "the minimum cell size " + numberText(pb.run.minCellSize) +
+                         " is below the model's horizon " + numberText(pb.model->horizon()) +
                          "; neighbours would be missed");
   pb.particles = readParticleFiles(dir + "/ParticleFixedAttrs.dat", dir + "/ParticleAlterAttrs.dat",
                                    pb.model->schema());
@@ -181,7 +173,7 @@ void writeParticleFiles(const std::string& dir, const ParticleSet& ps, const Sch
     for (std::size_t k = 0; k < ps.size(); ++k) {
       line = std::to_string(ps.gid[k]);
       const double* row = fixed ? ps.fixedRow(k) : ps.alterRow(k);
-      for (int c = 0; c < w; ++c) (line += ' ') += fmt17(row[c]);
+      for (int c = 0; c < w; ++c) (line += ' ') += numberText(row[c]);
       out << line << "\n";
     }
     f.commit();
@@ -193,16 +185,16 @@ void writeThesisInput(const std::string& dir, const Problem& pb, const Params& m
   std::ostringstream in;
   in << pb.run.procs[0] << " " << pb.run.procs[1] << " " << pb.run.procs[2]
      << "   # nPX nPY nPZ (0: automatic)\n"
-     << fmt17(pb.run.minCellSize) << "   # minimum cell size\n"
+     << numberText(pb.run.minCellSize) << "   # minimum cell size\n"
      << pb.run.steps << "   # number of time steps\n";
-  if (pb.run.margin >= 0) in << "margin " << fmt17(pb.run.margin) << "\n";
+  if (pb.run.margin >= 0) in << "margin " << numberText(pb.run.margin) << "\n";
   if (pb.run.dim) in << "dimension " << pb.run.dim << "\n";
   if (pb.run.periodic[0] || pb.run.periodic[1] || pb.run.periodic[2]) {
     in << "periodic " << pb.run.periodic[0] << " " << pb.run.periodic[1] << " "
        << pb.run.periodic[2] << "\nbox_lo";
-    for (double v : pb.run.boxLo) in << " " << fmt17(v);
+    for (double v : pb.run.boxLo) in << " " << numberText(v);
     in << "\nbox_hi";
-    for (double v : pb.run.boxHi) in << " " << fmt17(v);
+    for (double v : pb.run.boxHi) in << " " << numberText(v);
     in << "\n";
   }
   if (pb.output.restartEvery) in << "restart_every " << pb.output.restartEvery << "\n";

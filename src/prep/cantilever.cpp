@@ -9,15 +9,6 @@
 
 namespace pdq::prep {
 
-namespace {
-std::string num(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
-}  // namespace
-
 CantileverProblem thesisCantilever(const CantileverSpec& spec) {
   if (spec.m < 1 || spec.n < 1) throw InputError("cantilever", 0, "m and n must be at least 1");
   if (spec.model != "lps" && spec.model != "pmb")
@@ -26,14 +17,14 @@ CantileverProblem thesisCantilever(const CantileverSpec& spec) {
   pb.model = spec.model;
   const double s = spec.spacing, delta = spec.horizonFactor * s;
   Params& p = pb.params;
-  p.set("E", num(spec.E));
-  if (spec.model == "lps") p.set("nu", num(spec.nu));
-  p.set("horizon", num(delta));
-  p.set("thickness", num(s));
-  p.set("density", num(spec.density));
-  p.set("dt", num(spec.dt));
-  p.set("damping", num(spec.damping));
-  p.set("lattice_spacing", num(s));
+  p.set("E", numberText(spec.E));
+  if (spec.model == "lps") p.set("nu", numberText(spec.nu));
+  p.set("horizon", numberText(delta));
+  p.set("thickness", numberText(s));
+  p.set("density", numberText(spec.density));
+  p.set("dt", numberText(spec.dt));
+  p.set("damping", numberText(spec.damping));
+  p.set("lattice_spacing", numberText(s));
 
   const Schema schema = ModelRegistry::create(spec.model)->schema();
   ParticleSet& ps = pb.particles;
@@ -57,15 +48,8 @@ CantileverProblem thesisCantilever(const CantileverSpec& spec) {
 
 void writeThesisCantilever(const CantileverSpec& spec, const std::string& dir) {
   CantileverProblem c = thesisCantilever(spec);
-  Problem pb;
-  pb.source = dir;
-  pb.modelName = c.model;
-  pb.model = ModelRegistry::create(c.model);
-  pb.model->configure(c.params);
-  pb.particles = std::move(c.particles);
-  pb.run = c.run;
-  pb.output.finalRestart = false;
-  writeThesisInput(dir, pb, c.params);
+  c.run.source = dir;
+  writeThesisInput(dir, makeProblem(c.model, c.params, std::move(c.particles), c.run), c.params);
 }
 
 }  // namespace pdq::prep

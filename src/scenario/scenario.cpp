@@ -23,12 +23,6 @@ namespace {
 
 int lineOf(const toml::node& n) { return static_cast<int>(n.source().begin.line); }
 
-std::string numberText(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 // A scalar as Params text: numbers exactly (%.17g round-trips), words as written.
 std::string scalarText(const toml::node& v, const std::string& file, const std::string& key) {
   if (auto s = v.as_string()) return s->get();
@@ -125,9 +119,7 @@ void readModel(const toml::table& root, const std::string& file, Scenario& sc) {
   } else {
     throw InputError(file, nameLine, "'model' must be a table ([model] with name = \"...\")");
   }
-  pb.model = ModelRegistry::create(pb.modelName, file, nameLine);
-  pb.model->configure(sc.modelParams);
-  sc.modelParams.checkAllUsed();
+  pb.model = ModelRegistry::create(pb.modelName, sc.modelParams, file, nameLine);
 }
 
 Generated readParticles(const toml::table& root, const std::string& file, Scenario& sc) {

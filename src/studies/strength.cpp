@@ -14,12 +14,6 @@
 namespace pdq::strength {
 namespace {
 
-std::string number(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
 // How a trial loads the structure: its peak (× the problem's loads), the ramp to it and
 // the run in steps, and the hold-phase damping.
 struct Loading {
@@ -30,19 +24,16 @@ struct Loading {
 
 // The one place that turns a Loading into the model's parameters and the run's length.
 void applyLoading(const Loading& l, Params& model, RunConfig& run) {
-  model.set("load_scale", number(l.scale));
-  model.set("hold_damping_ratio", number(l.holdDamping));
-  model.set("ramp_fraction", number(static_cast<double>(l.rampSteps) / l.steps));
+  model.set("load_scale", numberText(l.scale));
+  model.set("hold_damping_ratio", numberText(l.holdDamping));
+  model.set("ramp_fraction", numberText(static_cast<double>(l.rampSteps) / l.steps));
   run.steps = l.steps;
 }
 
 std::unique_ptr<Simulation> simulation(const Case& c, const Params& params, RunConfig run,
                                        Comm& comm) {
-  auto model = ModelRegistry::create(c.model, c.source);
-  model->configure(params);
-  params.checkAllUsed();
   run.procs = {0, 0, 0};  // a trial runs on a group of ranks of its own
-  auto sim = std::make_unique<Simulation>(std::move(model), c.particles, run, comm);
+  auto sim = makeSimulation(makeProblem(c.model, params, c.particles, run), comm);
   sim->setup();
   return sim;
 }
@@ -149,8 +140,8 @@ Trial runTrial(const Case& c, Loading l, double load, int index, Comm& comm, con
   if (tr.steps == l.steps && !(std::fabs(values[loadAt] - l.scale) <= 1e-12 * std::fabs(l.scale)))
     throw InputError(c.source, 0,
                      "model " + c.model + "'s global '" + spec.load + "' is " +
-                         number(values[loadAt]) + " at the end of a trial at load_scale " +
-                         number(l.scale) + ": it does not follow the trial's loading");
+                         numberText(values[loadAt]) + " at the end of a trial at load_scale " +
+                         numberText(l.scale) + ": it does not follow the trial's loading");
   tr.uEnd = displacement(values);
   tr.brokenEnd = values[damageAt];
   tr.holds = !runaway && std::isfinite(tr.uEnd) &&

@@ -22,9 +22,7 @@ strength::Case strengthCase(const Scenario& sc) {
     const auto v = sc.strengthModel.raw(k);
     c.params.set(k, v->text, v->file, v->line);
   }
-  auto model = ModelRegistry::create(c.model, c.source);
-  model->configure(c.params);
-  c.params.checkAllUsed();
+  auto model = ModelRegistry::create(c.model, c.params, c.source);
   if (model->strengthSpec().load.empty())
     throw InputError(pb.source, 0,
                      "model " + c.model +

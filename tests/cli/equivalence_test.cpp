@@ -1,7 +1,10 @@
 // The same run three ways gives the same bits: from the TOML scenario, from the thesis's
-// .dat files `pdq prep` wrote for it, and under mpirun -np 2 (and 3, with a chosen grid).
+// .dat files `pdq prep` wrote for it (for every example scenario too), and under mpirun
+// -np 2 (and 3, with a chosen grid).
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include <filesystem>
 
 #include "pdq_process.hpp"
 #include "spring_case.hpp"
@@ -32,6 +35,33 @@ TEST(CliEquivalence, ScenarioAndThesisFilesAgreeBitwise) {
   expectSameFinalState(dir + "/from_toml", dir + "/from_dat");
   // The time history of the monitored particles too.
   EXPECT_EQ(readFile(dir + "/from_toml/timehist.dat"), readFile(dir + "/from_dat/timehist.dat"));
+}
+
+// Every example scenario shipped in examples/ (a few steps of each): `pdq prep X.toml` then
+// `pdq run` of the folder ends in the same bits as `pdq run X.toml`.
+TEST(CliEquivalence, EveryExampleThroughItsThesisFilesAgreesBitwise) {
+  namespace fs = std::filesystem;
+  const std::string dir = freshDir("equivalence_examples");
+  int examples = 0;
+  for (const auto& e : fs::recursive_directory_iterator(pdq::test::sourceDir() + "/examples")) {
+    if (e.path().extension() != ".toml" || e.path().parent_path().filename() == "plugin") continue;
+    const std::string name = e.path().stem().string();
+    SCOPED_TRACE(e.path().string());
+    const std::string steps = "12";
+    auto r = runPdq({"prep", e.path().string(), "-o", name + "_dat"}, dir);
+    ASSERT_EQ(r.code, 0) << r.all();
+    r = runPdq({"run", e.path().string(), "-q", "--steps", steps, "--out", name + "_toml"}, dir);
+    ASSERT_EQ(r.code, 0) << r.all();
+    r = runPdq({"run", name + "_dat", "-q", "--steps", steps, "--out", name + "_from_dat"}, dir);
+    ASSERT_EQ(r.code, 0) << r.all();
+    const std::string rst = "/ParticleAlterAttrs." + steps + ".rst";
+    const std::string a = readFile(dir + "/" + name + "_toml" + rst);
+    ASSERT_FALSE(a.empty()) << name << "_toml" << rst;
+    EXPECT_TRUE(a == readFile(dir + "/" + name + "_from_dat" + rst))
+        << name << ": the .dat route differs from the scenario";
+    ++examples;
+  }
+  EXPECT_GE(examples, 11);  // spring, lj and the nine MPLM examples
 }
 
 TEST(CliEquivalence, MpirunMatchesOneRankBitwise) {

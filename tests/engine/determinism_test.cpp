@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "io/standard_outputs.hpp"
 #include "support/harness.hpp"
 
 namespace pdq {
@@ -19,20 +20,21 @@ struct Layout {
 
 test::State runSpring(MPI_Comm c, const Layout& l, bool shuffle, long steps) {
   omp_set_num_threads(l.threads);
-  auto model = test::makeModel("spring", {{"stiffness", "1.0"},
-                                          {"horizon", "1.5"},
-                                          {"dt", "0.05"},
-                                          {"critical_stretch", "0.08"},
-                                          {"shuffle", shuffle ? "true" : "false"}});
-  const Schema schema = model->schema();
-  ParticleSet ps = test::cubicBlock(schema, 10, 8, 6, 1.0);
+  Problem pb = makeProblem("spring",
+                           test::params({{"stiffness", "1.0"},
+                                         {"horizon", "1.5"},
+                                         {"dt", "0.05"},
+                                         {"critical_stretch", "0.08"},
+                                         {"shuffle", shuffle ? "true" : "false"}}),
+                           {});
+  ParticleSet& ps = pb.particles = test::cubicBlock(pb.model->schema(), 10, 8, 6, 1.0);
   for (std::size_t k = 0; k < ps.size(); ++k) {  // a deterministic, rough initial velocity field
     const double g = static_cast<double>(ps.gid[k]);
     ps.alterRow(k)[3] = 0.3 * std::sin(1.7 * g);
     ps.alterRow(k)[4] = 0.3 * std::cos(2.3 * g);
     ps.alterRow(k)[5] = 0.3 * std::sin(0.9 * g + 1.0);
   }
-  RunConfig cfg;
+  RunConfig& cfg = pb.run;
   cfg.procs = l.grid;
   cfg.steps = steps;
   cfg.outDir = "out_determinism";
@@ -43,9 +45,9 @@ test::State runSpring(MPI_Comm c, const Layout& l, bool shuffle, long steps) {
     cfg.boxHi = {9.5, 7.5, 5.5};
   }
   Comm comm(c);
-  Simulation sim(std::move(model), std::move(ps), cfg, comm);
-  sim.run();
-  return test::gatherState(sim);
+  auto sim = makeSimulation(std::move(pb), comm);
+  sim->run();
+  return test::gatherState(*sim);
 }
 
 void checkAllLayouts(bool shuffle) {

@@ -2,25 +2,28 @@
 // particles' alterable attributes; a shuffle step adds at most as many messages again.
 #include <gtest/gtest.h>
 
+#include "io/standard_outputs.hpp"
 #include "support/harness.hpp"
 
 namespace pdq {
 namespace {
 
-Simulation makeRun(Comm& comm, int nz, bool shuffle, long steps) {
-  auto model = test::makeModel(
-      "spring", {{"horizon", "1.5"}, {"dt", "0.05"}, {"shuffle", shuffle ? "true" : "false"}});
-  ParticleSet ps = test::cubicBlock(model->schema(), 12, 12, nz, 1.0);
+std::unique_ptr<Simulation> makeRun(Comm& comm, int nz, bool shuffle, long steps) {
+  Problem pb = makeProblem(
+      "spring",
+      test::params({{"horizon", "1.5"}, {"dt", "0.05"}, {"shuffle", shuffle ? "true" : "false"}}),
+      {});
+  ParticleSet& ps = pb.particles = test::cubicBlock(pb.model->schema(), 12, 12, nz, 1.0);
   for (std::size_t k = 0; k < ps.size(); ++k) ps.alterRow(k)[3] = (ps.gid[k] % 2 ? 0.2 : -0.2);
-  RunConfig cfg;
-  cfg.steps = steps;
-  cfg.outDir = "out_exchange";
-  return Simulation(std::move(model), std::move(ps), cfg, comm);
+  pb.run.steps = steps;
+  pb.run.outDir = "out_exchange";
+  return makeSimulation(std::move(pb), comm);
 }
 
 TEST(Exchange, HaloMessagesAndBytes3D) {
   Comm comm;
-  Simulation sim = makeRun(comm, 6, false, 3);
+  const auto simulation = makeRun(comm, 6, false, 3);
+  Simulation& sim = *simulation;
   sim.run();
   const StepStats& s = sim.stats();
   EXPECT_LE(s.haloMessages, 6u);
@@ -58,7 +61,8 @@ TEST(Exchange, LpsHaloCarriesPositionsAndVelocitiesOnly) {
 
 TEST(Exchange, HaloMessages2D) {
   Comm comm;
-  Simulation sim = makeRun(comm, 1, false, 3);
+  const auto simulation = makeRun(comm, 1, false, 3);
+  Simulation& sim = *simulation;
   sim.run();
   EXPECT_EQ(sim.decomposition().dim(), 2);
   EXPECT_LE(sim.stats().haloMessages, 4u);
@@ -66,7 +70,8 @@ TEST(Exchange, HaloMessages2D) {
 
 TEST(Exchange, ShuffleStepAddsAtMostAsManyAgain) {
   Comm comm;
-  Simulation sim = makeRun(comm, 6, true, 40);
+  const auto simulation = makeRun(comm, 6, true, 40);
+  Simulation& sim = *simulation;
   sim.run();
   EXPECT_GT(sim.stats().shuffles, 0u);
   EXPECT_LE(sim.stats().maxShuffleMessages, 12u);

@@ -17,12 +17,12 @@ namespace pdq {
 namespace {
 
 Problem springProblem(bool shuffle, const std::string& dir) {
-  Problem pb;
-  pb.modelName = "spring";
-  pb.model = test::makeModel("spring", {{"horizon", "1.5"},
-                                        {"dt", "0.05"},
-                                        {"critical_stretch", "0.08"},
-                                        {"shuffle", shuffle ? "true" : "false"}});
+  Problem pb = makeProblem("spring",
+                           test::params({{"horizon", "1.5"},
+                                         {"dt", "0.05"},
+                                         {"critical_stretch", "0.08"},
+                                         {"shuffle", shuffle ? "true" : "false"}}),
+                           {});
   pb.particles = test::cubicBlock(pb.model->schema(), 8, 6, 5, 1.0);
   for (std::size_t k = 0; k < pb.particles.size(); ++k) {
     const double g = static_cast<double>(pb.particles.gid[k]);
@@ -38,16 +38,15 @@ Problem springProblem(bool shuffle, const std::string& dir) {
     pb.run.boxHi = {7.5, 5.5, 6.5};
   }
   pb.output.restartEvery = 120;
+  pb.output.finalRestart = true;
   return pb;
 }
 
-test::State runProblem(Problem pb, RestartState* bonds = nullptr) {
+test::State runProblem(Problem pb) {
   Comm comm;
-  Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
-  if (bonds) sim.restore(*bonds);
-  addStandardOutputs(sim, pb.output);
-  sim.run();
-  return test::gatherState(sim);
+  const auto sim = makeSimulation(std::move(pb), comm);
+  sim->run();
+  return test::gatherState(*sim);
 }
 
 void checkRestart(bool shuffle) {
@@ -58,13 +57,13 @@ void checkRestart(bool shuffle) {
   MPI_Barrier(MPI_COMM_WORLD);
   const test::State full = runProblem(springProblem(shuffle, dir));
   Problem again = springProblem(shuffle, dir + "_again");
-  RestartState bonds = readRestart(restartPath(dir, 240), again);
+  again.restart = readRestart(restartPath(dir, 240), again);
   EXPECT_EQ(again.run.firstStep, 240);
-  EXPECT_FALSE(bonds.owner.empty());
+  EXPECT_FALSE(again.restart->owner.empty());
   long dead = 0;
-  for (auto d : bonds.dead) dead += d;
+  for (auto d : again.restart->dead) dead += d;
   EXPECT_GT(dead, 0) << "no spring broke before the restart; the test would prove little";
-  const test::State resumed = runProblem(std::move(again), &bonds);
+  const test::State resumed = runProblem(std::move(again));
   if (rank == 0) {
     EXPECT_FALSE(full.particles.empty());
     EXPECT_TRUE(full == resumed) << "the restarted run differs from the uninterrupted one";

@@ -11,9 +11,9 @@
 namespace pdq {
 namespace {
 
-using ljtest::global;
 using ljtest::makeMelt;
 using ljtest::Melt;
+using test::global;
 
 struct Drift {
   double e0 = 0, maxError = 0;  // initial total energy, largest |E(n) - E(0)|

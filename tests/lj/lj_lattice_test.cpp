@@ -12,9 +12,9 @@
 namespace pdq {
 namespace {
 
-using ljtest::global;
 using ljtest::makeMelt;
 using ljtest::Melt;
+using test::global;
 
 // Energy per atom of an infinite fcc lattice of lattice constant a: half the sum of the
 // truncated pair energies between the atom at the origin and every other site.

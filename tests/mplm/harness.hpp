@@ -12,6 +12,7 @@
 #include "engine/params.hpp"
 #include "engine/simulation.hpp"
 #include "scenario/scenario.hpp"
+#include "support/harness.hpp"
 
 namespace pdq::mplm::test {
 
@@ -26,32 +27,12 @@ inline Scenario example(const std::string& name) {
                       ".toml");
 }
 
-inline Params params(const std::map<std::string, std::string>& kv) {
-  Params p("test");
-  for (const auto& [k, v] : kv) p.set(k, v);
-  return p;
-}
+using pdq::test::global;
+using pdq::test::params;
 
 inline std::unique_ptr<Simulation> simulation(Comm& comm, const Params& p, ParticleSet ps,
                                               long steps, const std::string& modelName = "mplm2d") {
-  auto model = ModelRegistry::create(modelName);
-  model->configure(p);
-  p.checkAllUsed();
-  RunConfig cfg;
-  cfg.steps = steps;
-  cfg.outDir = "mplm_test_out";
-  auto sim = std::make_unique<Simulation>(std::move(model), std::move(ps), cfg, comm);
-  sim->setup();
-  return sim;
-}
-
-// A named global of the model (load, displacement, kinetic energy, ...), same on all ranks.
-inline double global(Simulation& sim, const std::string& name) {
-  const auto names = sim.model().globals();
-  const auto values = sim.model().globalValues(sim.context());
-  for (std::size_t k = 0; k < names.size(); ++k)
-    if (names[k] == name) return values[k];
-  throw std::runtime_error("no global " + name);
+  return pdq::test::simulation(comm, modelName, p, std::move(ps), steps);
 }
 
 }  // namespace pdq::mplm::test

@@ -12,7 +12,9 @@
 
 #include "engine/error.hpp"
 #include "engine/simulation.hpp"
+#include "io/standard_outputs.hpp"
 #include "models/mplm/2d/attributes.hpp"
+#include "support/harness.hpp"
 
 namespace pdq::mplm {
 namespace {
@@ -24,10 +26,10 @@ Scenario scenarioFrom(const std::string& path, const std::string& text) {
   return readScenario(path);
 }
 
-// The scenario's simulation on `comm`, not yet set up.
+// The scenario's simulation on `comm`, without its outputs.
 std::unique_ptr<Simulation> simulation(Scenario& sc, Comm& comm) {
-  return std::make_unique<Simulation>(std::move(sc.problem.model), std::move(sc.problem.particles),
-                                      sc.problem.run, comm);
+  sc.problem.output = {.finalRestart = false};
+  return makeSimulation(std::move(sc.problem), comm);
 }
 
 TEST(MplmScenarios, SpacingMustMatchTheLattice) {
@@ -42,15 +44,6 @@ TEST(MplmScenarios, SpacingMustMatchTheLattice) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("lattice spacing is 0.02"), std::string::npos) << e.what();
   }
-}
-
-double global(Simulation& sim, const std::string& name) {
-  const auto names = sim.model().globals();
-  const auto values = sim.model().globalValues(sim.context());
-  for (std::size_t k = 0; k < names.size(); ++k)
-    if (names[k] == name) return values[k];
-  ADD_FAILURE() << "no global " << name;
-  return 0;
 }
 
 // A plain rectangle (loading = "none") with supports, a prescribed displacement and a
@@ -99,11 +92,11 @@ y = [0.19, 0.2]
   auto simPtr = simulation(sc, comm);
   Simulation& sim = *simPtr;
   sim.run();
-  EXPECT_NEAR(global(sim, "uy"), u, 1e-15);
+  EXPECT_NEAR(test::global(sim, "uy"), u, 1e-15);
   const double E = 24.86e9, t = 0.12;
   const double expected = E * (u / top) * 10 * s * t;
-  EXPECT_NEAR(global(sim, "reaction_y") / expected, 1.0, 0.01);
-  EXPECT_LT(global(sim, "kinetic"), 1e-12);
+  EXPECT_NEAR(test::global(sim, "reaction_y") / expected, 1.0, 0.01);
+  EXPECT_LT(test::global(sim, "kinetic"), 1e-12);
 }
 
 // A plate resting on a bearing (constraint 8 = REST_Y on its bottom row, X held at one
@@ -155,11 +148,11 @@ y = [-0.001, 0.001]
     Simulation& sim = *simPtr;
     sim.run();
     if (load < 0) {
-      EXPECT_EQ(global(sim, "uy"), 0.0);  // on the bearing, never below it
-      EXPECT_NEAR(global(sim, "reaction_y"), -total, 1e-6 * std::fabs(total));
+      EXPECT_EQ(test::global(sim, "uy"), 0.0);  // on the bearing, never below it
+      EXPECT_NEAR(test::global(sim, "reaction_y"), -total, 1e-6 * std::fabs(total));
     } else {
-      EXPECT_GT(global(sim, "uy"), 0.0);  // lifted off
-      EXPECT_EQ(global(sim, "reaction_y"), 0.0);
+      EXPECT_GT(test::global(sim, "uy"), 0.0);  // lifted off
+      EXPECT_EQ(test::global(sim, "reaction_y"), 0.0);
     }
   }
 }

@@ -1,11 +1,8 @@
 #pragma once
 // Helpers shared by the peridynamics tests: building a model's particle set on a lattice
 // and reading back a global table of positions.
-#include <cstring>
-#include <functional>
 #include <map>
 #include <memory>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -13,16 +10,11 @@
 #include "engine/model.hpp"
 #include "engine/params.hpp"
 #include "engine/simulation.hpp"
+#include "io/standard_outputs.hpp"
 #include "prep/lattice.hpp"
+#include "support/harness.hpp"
 
 namespace pdq::pdtest {
-
-inline std::string num(double v) {
-  std::ostringstream os;
-  os.precision(17);
-  os << v;
-  return os.str();
-}
 
 struct Problem {
   std::string model;
@@ -40,7 +32,7 @@ inline Problem latticeProblem(const std::string& model,
                               const prep::Lattice& lattice, double thickness = 1.0) {
   Problem pb;
   pb.model = model;
-  for (auto& [k, v] : kv) pb.params.set(k, num(v));
+  for (auto& [k, v] : kv) pb.params.set(k, numberText(v));
   pb.schema = ModelRegistry::create(model)->schema();
   pb.ps.nFixed = pb.schema.nFixed();
   pb.ps.nAlter = pb.schema.nAlter();
@@ -52,35 +44,16 @@ inline Problem latticeProblem(const std::string& model,
 }
 
 inline std::unique_ptr<Simulation> makeSimulation(Problem pb, RunConfig cfg, Comm& comm) {
-  auto m = ModelRegistry::create(pb.model);
-  m->configure(pb.params);
-  pb.params.checkAllUsed();
-  return std::make_unique<Simulation>(std::move(m), std::move(pb.ps), cfg, comm);
+  return pdq::makeSimulation(pdq::makeProblem(pb.model, pb.params, std::move(pb.ps), cfg), comm);
 }
 
 // Every particle's alterable row, by ID, gathered on rank 0 (empty elsewhere).
 inline std::map<Gid, std::vector<double>> gatherAlter(Simulation& sim) {
-  Particles& P = sim.particles();
-  const int nA = P.schema().nAlter();
-  std::vector<char> bytes;
-  for (std::size_t i = 0; i < P.owned(); ++i) {
-    const Gid g = P.gid(i);
-    bytes.insert(bytes.end(), reinterpret_cast<const char*>(&g),
-                 reinterpret_cast<const char*>(&g) + sizeof g);
-    bytes.insert(bytes.end(), reinterpret_cast<const char*>(P.alter(i)),
-                 reinterpret_cast<const char*>(P.alter(i) + nA));
-  }
+  const int width = 1 + sim.particles().schema().nAlter();
+  const std::vector<double> rows = test::gatherState(sim).particles;
   std::map<Gid, std::vector<double>> out;
-  for (auto& block : sim.comm().gather(bytes)) {
-    const std::size_t rec = sizeof(Gid) + nA * sizeof(double);
-    for (std::size_t o = 0; o + rec <= block.size(); o += rec) {
-      Gid g;
-      std::memcpy(&g, &block[o], sizeof g);
-      std::vector<double> row(nA);
-      std::memcpy(row.data(), &block[o + sizeof g], nA * sizeof(double));
-      out[g] = std::move(row);
-    }
-  }
+  for (std::size_t k = 0; k < rows.size(); k += width)
+    out[static_cast<Gid>(rows[k])].assign(&rows[k + 1], &rows[k] + width);
   return out;
 }
 

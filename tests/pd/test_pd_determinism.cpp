@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "pd_fixture.hpp"
 #include "prep/cantilever.hpp"
@@ -42,28 +43,15 @@ State runOn(int ranks, std::array<int, 3> grid, int threads, Make make) {
     auto sim = makeSimulation(std::move(pb), cfg, comm);
     sim->run();
     out = gatherAlter(*sim);
-    // Broken bonds count too: append each particle's number of broken bonds.
-    Particles& P = sim->particles();
-    std::vector<double> intact(P.owned());
-    for (std::size_t i = 0; i < P.owned(); ++i)
-      for (std::size_t b = sim->bonds().begin(i); b < sim->bonds().end(i); ++b)
-        intact[i] += sim->bonds().attr(b)[1] == 0;
-    std::vector<char> bytes;
-    for (std::size_t i = 0; i < P.owned(); ++i) {
-      const Gid g = P.gid(i);
-      bytes.insert(bytes.end(), reinterpret_cast<const char*>(&g),
-                   reinterpret_cast<const char*>(&g + 1));
-      bytes.insert(bytes.end(), reinterpret_cast<const char*>(&intact[i]),
-                   reinterpret_cast<const char*>(&intact[i] + 1));
-    }
-    for (auto& block : comm.gather(bytes))
-      for (std::size_t o = 0; o < block.size(); o += sizeof(Gid) + sizeof(double)) {
-        Gid g;
-        double v;
-        std::memcpy(&g, &block[o], sizeof g);
-        std::memcpy(&v, &block[o + sizeof g], sizeof v);
-        out[g].push_back(v);
-      }
+    // Broken bonds count too: append each particle's number of intact bonds. Bond rows:
+    // owner, partner, dead, attributes.
+    const std::vector<double> bonds = test::gatherState(*sim).bonds;
+    const std::size_t width = 3 + sim->bonds().nAttr();
+    std::map<Gid, double> intact;
+    for (auto& [g, row] : out) intact[g] = 0;
+    for (std::size_t r = 0; r < bonds.size(); r += width)
+      intact[static_cast<Gid>(bonds[r])] += bonds[r + 3 + 1] == 0;
+    for (auto& [g, row] : out) row.push_back(intact[g]);
     MPI_Comm_free(&sub);
   }
   omp_set_num_threads(1);

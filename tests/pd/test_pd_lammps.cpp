@@ -21,17 +21,14 @@ void sideBySide(const std::string& model) {
   const std::string dir =
       std::filesystem::absolute("pd_lammps_" + model + "_np" + std::to_string(comm.size()));
   if (comm.root()) std::filesystem::create_directories(dir);
-  Params p = lammps::blockParams(bl, model);
-  auto m = ModelRegistry::create(model);
-  m->configure(p);
-  ParticleSet ps = lammps::blockParticles(bl, m->schema());
-  if (comm.root()) lammps::writeLammps(bl, model, steps, dir, ps);
-  RunConfig cfg;
-  cfg.steps = steps;
-  cfg.outDir = dir + "/pdq_out";
-  Simulation sim(std::move(m), std::move(ps), cfg, comm);
-  sim.run();
-  const auto state = gatherAlter(sim);
+  pdq::Problem pb = makeProblem(model, lammps::blockParams(bl, model), {});
+  pb.particles = lammps::blockParticles(bl, pb.model->schema());
+  if (comm.root()) lammps::writeLammps(bl, model, steps, dir, pb.particles);
+  pb.run.steps = steps;
+  pb.run.outDir = dir + "/pdq_out";
+  const auto sim = pdq::makeSimulation(std::move(pb), comm);
+  sim->run();
+  const auto state = gatherAlter(*sim);
   if (!comm.root()) return;
   lammps::Displacements pdqU;
   for (auto& [id, row] : state) {

@@ -1,9 +1,11 @@
 #include "support/harness.hpp"
 
 #include <cstring>
+#include <stdexcept>
 
 #include "engine/comm.hpp"
 #include "io/gather.hpp"
+#include "io/standard_outputs.hpp"
 
 namespace pdq::test {
 
@@ -77,14 +79,27 @@ ParticleSet cubicBlock(const Schema& schema, int nx, int ny, int nz, double h) {
   return ps;
 }
 
-std::unique_ptr<Model> makeModel(const std::string& name,
-                                 const std::vector<std::pair<std::string, std::string>>& params) {
-  auto m = ModelRegistry::create(name);
-  Params p(name);
-  for (const auto& [k, v] : params) p.set(k, v, "test", 0);
-  m->configure(p);
-  p.checkAllUsed();
-  return m;
+Params params(const std::vector<std::pair<std::string, std::string>>& kv) {
+  Params p("test");
+  for (const auto& [k, v] : kv) p.set(k, v, "test", 0);
+  return p;
+}
+
+std::unique_ptr<Simulation> simulation(Comm& comm, const std::string& model, const Params& params,
+                                       ParticleSet particles, long steps) {
+  RunConfig run;
+  run.steps = steps;
+  auto sim = makeSimulation(makeProblem(model, params, std::move(particles), run), comm);
+  sim->setup();
+  return sim;
+}
+
+double global(Simulation& sim, const std::string& name) {
+  const auto names = sim.model().globals();
+  const auto values = sim.model().globalValues(sim.context());
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (names[k] == name) return values[k];
+  throw std::runtime_error("no global " + name);
 }
 
 }  // namespace pdq::test

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/model.hpp"
+#include "engine/params.hpp"
 #include "engine/particle_set.hpp"
 #include "engine/simulation.hpp"
 
@@ -35,7 +36,14 @@ State toWorldRoot(const State& s, int from);
 // A simple-cubic block of nx*ny*nz particles at spacing h, gids 1.., with extra columns zeroed.
 ParticleSet cubicBlock(const Schema& schema, int nx, int ny, int nz, double h);
 
-std::unique_ptr<Model> makeModel(const std::string& name,
-                                 const std::vector<std::pair<std::string, std::string>>& params);
+// Parameters from (key, value) texts, as a scenario's table gives them.
+Params params(const std::vector<std::pair<std::string, std::string>>& kv);
+
+// `model` configured with `params`, on `particles`, set up on `comm` to run `steps` steps.
+std::unique_ptr<Simulation> simulation(Comm& comm, const std::string& model, const Params& params,
+                                       ParticleSet particles, long steps);
+
+// A global of the model by name (load, displacement, energies): a collective call.
+double global(Simulation& sim, const std::string& name);
 
 }  // namespace pdq::test
