@@ -38,18 +38,20 @@ TEST(Exchange, HaloMessagesAndBytes3D) {
 // carries positions and velocities only.
 TEST(Exchange, LpsHaloCarriesPositionsAndVelocitiesOnly) {
   Comm comm;
-  auto model = test::makeModel(
+  Problem pb = makeProblem(
       "lps",
-      {{"E", "1e9"}, {"nu", "0.25"}, {"horizon", "3.1"}, {"density", "1000"}, {"dt", "1e-5"}});
-  ParticleSet ps = test::cubicBlock(model->schema(), 10, 10, 6, 1.0);
+      test::params(
+          {{"E", "1e9"}, {"nu", "0.25"}, {"horizon", "3.1"}, {"density", "1000"}, {"dt", "1e-5"}}),
+      {});
+  ParticleSet& ps = pb.particles = test::cubicBlock(pb.model->schema(), 10, 10, 6, 1.0);
   for (std::size_t k = 0; k < ps.size(); ++k) {
     ps.fixedRow(k)[9] = 1.0;  // volume
     ps.alterRow(k)[3] = (ps.gid[k] % 2 ? 0.01 : -0.01);
   }
-  RunConfig cfg;
-  cfg.steps = 3;
-  cfg.outDir = "out_exchange_lps";
-  Simulation sim(std::move(model), std::move(ps), cfg, comm);
+  pb.run.steps = 3;
+  pb.run.outDir = "out_exchange_lps";
+  const auto simulation = makeSimulation(std::move(pb), comm);
+  Simulation& sim = *simulation;
   sim.run();
   const StepStats& s = sim.stats();
   EXPECT_EQ(sim.particles().schema().nAlter(), 6);

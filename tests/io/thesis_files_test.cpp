@@ -16,13 +16,8 @@ const std::string kDir = "out_thesis_files";
 
 Problem writeSpringSet() {
   std::filesystem::remove_all(kDir);
-  Problem pb;
-  pb.modelName = "spring";
-  Params mp("spring");
-  mp.set("horizon", "1.5");
-  mp.set("dt", "0.02");
-  pb.model = ModelRegistry::create("spring");
-  pb.model->configure(mp);
+  const Params mp = test::params({{"horizon", "1.5"}, {"dt", "0.02"}});
+  Problem pb = makeProblem("spring", mp, {});
   pb.particles = test::cubicBlock(pb.model->schema(), 4, 3, 2, 0.5);
   pb.particles.alterRow(5)[3] = 0.1 / 3.0;  // a value that needs all 17 digits
   pb.run.procs = {2, 1, 1};

@@ -7,8 +7,8 @@
 
 #include "harness.hpp"
 #include "models/mplm/2d/attributes.hpp"
-#include "prep/mplm/specimen.hpp"
 #include "prep/hexagonal.hpp"
+#include "prep/mplm/specimen.hpp"
 
 namespace pdq::mplm {
 namespace {

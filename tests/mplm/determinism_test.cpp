@@ -8,9 +8,9 @@
 #include <utility>
 
 #include "harness.hpp"
-#include "support/harness.hpp"
 #include "models/mplm/2d/attributes.hpp"
 #include "prep/mplm/generators.hpp"
+#include "support/harness.hpp"
 
 namespace pdq::mplm {
 namespace {

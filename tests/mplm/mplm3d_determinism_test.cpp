@@ -7,6 +7,7 @@
 #include <map>
 #include <string>
 
+#include "io/standard_outputs.hpp"
 #include "models/mplm/3d/attributes.hpp"
 #include "prep/fcc.hpp"
 #include "prep/mplm/specimen.hpp"
@@ -27,24 +28,23 @@ struct Layout {
 test::State run(MPI_Comm c, const Layout& l) {
   omp_set_num_threads(l.threads);
   constexpr double s = 0.02;
-  auto model = test::makeModel("mplm3d", {{"spacing", "0.02"}});
-  ParticleSet ps = newParticleSet();
+  Problem pb = makeProblem("mplm3d", test::params({{"spacing", "0.02"}}), newParticleSet());
+  ParticleSet& ps = pb.particles;
   addConcrete(ps, closePackedBox({s, 0, 2}, {0.3, 0.1, 0.08}));
   const double xmax = mplm::maxCoord(ps, 0);
   constrain(ps, mplm::select(ps, [&](const double* f) { return f[0] < s; }), FIX_ALL);
   constrain(ps, mplm::select(ps, [&](const double* f) { return f[0] > xmax - s / 4; }),
             FIX_X | FIX_Y, {1e-3, -5e-4, 0, 0, 0, 0});
-  RunConfig cfg;
-  cfg.procs = l.grid;
-  cfg.steps = 300;
-  cfg.outDir = "out_mplm3d_determinism";
+  pb.run.procs = l.grid;
+  pb.run.steps = 300;
+  pb.run.outDir = "out_mplm3d_determinism";
   Comm comm(c);
-  Simulation sim(std::move(model), std::move(ps), cfg, comm);
-  sim.run();
+  const auto sim = makeSimulation(std::move(pb), comm);
+  sim->run();
   // The strength search's failure classifier sees the cracks (on every rank alike).
-  const std::string mode = sim.model().strengthSpec().failureMode(sim.context());
+  const std::string mode = sim->model().strengthSpec().failureMode(sim->context());
   EXPECT_TRUE(mode == "flexural" || mode == "shear" || mode == "compression") << mode;
-  return test::gatherState(sim);
+  return test::gatherState(*sim);
 }
 
 TEST(Mplm3dDeterminism, CrackingBarSameBitsOnRanksGridsThreads) {
