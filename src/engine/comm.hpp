@@ -50,7 +50,6 @@ class Comm {
 
   std::uint64_t messages() const { return messages_; }
   std::uint64_t bytes() const { return bytes_; }
-  void resetCounters() { messages_ = bytes_ = 0; }
 
  private:
   MPI_Comm comm_;

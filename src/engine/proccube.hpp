@@ -59,8 +59,6 @@ class ProcCube {
   double maxDisplacementSinceRebuild() const;
 
   // --- cells, for neighbour iteration ---
-  int cellOf(std::size_t i) const { return cell_[i]; }
-  int cellCount() const { return static_cast<int>(cellStart_.size()) - 1; }
   // Visits every particle j (owned or ghost, j != i) in the cells around i's cell, in the
   // canonical order: cells by (dz, dy, dx), particles in a cell by global ID.
   template <class F>

@@ -1,6 +1,6 @@
 // pdq and LAMMPS's PERI package (peri/pmb, peri/lps) on the same undamped, undamaged 3D
 // block for 200 steps: every particle's displacement agrees to 1e-9 of the largest one.
-// Registered only where /usr/bin/lmp exists (installed by `make test`).
+// Fails where LAMMPS's lmp is missing (installed by `make test`: tools/install-deps.sh test).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -38,9 +38,12 @@ void sideBySide(const std::string& model) {
     pdqU[id] = {row[0] - X[0], row[1] - X[1], row[2] - X[2]};
   }
   // A clean environment, so that lmp does not take itself for part of this MPI job.
+  ASSERT_TRUE(std::filesystem::exists(PDQ_LMP))
+      << "LAMMPS's lmp was not found when pdq was configured: install it "
+         "(tools/install-deps.sh test) and configure again";
   const std::string cmd = "cd '" + dir +
-                          "' && env -i PATH=/usr/bin:/bin HOME=/tmp OMP_NUM_THREADS=1 "
-                          "/usr/bin/lmp -in lammps.in -log lammps.log > lmp.out 2>&1";
+                          "' && env -i PATH=/usr/bin:/bin HOME=/tmp OMP_NUM_THREADS=1 " PDQ_LMP
+                          " -in lammps.in -log lammps.log > lmp.out 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << "LAMMPS failed, see " << dir << "/lmp.out";
   const lammps::Difference d =
       lammps::compare(pdqU, lammps::readDisplacements(dir + "/lammps.dump"), "lammps.dump");

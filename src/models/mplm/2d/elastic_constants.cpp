@@ -21,10 +21,6 @@ ElasticConstants planeStrain(double E, double nu, double s, double t) {
   return {E * s * t / (r3 * c), E * s * s * s * t * (1 - 4 * nu) / (12 * r3 * c)};
 }
 
-ElasticConstants frame(double E, double area, double secondMoment) {
-  return {E * area, E * secondMoment};
-}
-
 ElasticConstants forContinuum(const std::string& form, double E, double nu, double s, double t) {
   if (form == "plane_stress") return planeStress(E, nu, s, t);
   if (form == "plane_strain") return planeStrain(E, nu, s, t);

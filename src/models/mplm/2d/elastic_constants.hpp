@@ -17,8 +17,6 @@ ElasticConstants planeStress(double E, double nu, double s, double t);
 // Eq. 4.6 as printed implies two different thicknesses; energy equivalence gives
 // a = E s t / (√3 (1+ν)(1−2ν)), b = E s³ t (1−4ν) / (12√3 (1+ν)(1−2ν)); needs ν < 1/4.
 ElasticConstants planeStrain(double E, double nu, double s, double t);
-// Eq. 4.4, frames: a = E A, b = E I.
-ElasticConstants frame(double E, double area, double secondMoment);
 
 // The constants for a named form ("plane_stress", "plane_strain"); throws std::domain_error
 // when ν makes b negative.
