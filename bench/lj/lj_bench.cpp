@@ -13,6 +13,7 @@
 
 #include "engine/model.hpp"
 #include "engine/simulation.hpp"
+#include "io/standard_outputs.hpp"
 #include "prep/fcc.hpp"
 
 int main(int argc, char** argv) {
@@ -30,10 +31,9 @@ int main(int argc, char** argv) {
   p.set("skin", "0.3");
   p.set("dt", "0.005");
   p.set("shift", "energy");
-  auto model = pdq::ModelRegistry::create("lj");
-  model->configure(p);
-  const pdq::Schema schema = model->schema();
-  pdq::ParticleSet ps;
+  pdq::Problem pb = pdq::makeProblem("lj", p, {});
+  const pdq::Schema schema = pb.model->schema();
+  pdq::ParticleSet& ps = pb.particles;
   ps.nFixed = schema.nFixed();
   ps.nAlter = schema.nAlter();
   pdq::FccSpec spec;
@@ -45,14 +45,15 @@ int main(int argc, char** argv) {
   const pdq::FccBox box = pdq::makeFcc(spec, ps);
   const double atoms = static_cast<double>(ps.size());
 
-  pdq::RunConfig cfg;
+  pdq::RunConfig& cfg = pb.run;
   cfg.periodic = {true, true, true};
   cfg.boxLo = box.lo;
   cfg.boxHi = box.hi;
   cfg.minCellSize = 2.5 + 0.3;
   cfg.steps = steps;
   cfg.checkEvery = 0;
-  pdq::Simulation sim(std::move(model), std::move(ps), cfg, comm);
+  const auto simulation = pdq::makeSimulation(std::move(pb), comm);
+  pdq::Simulation& sim = *simulation;
   sim.setup();
   const double e0 = sim.model().globalValues(sim.context())[2];
   auto cpuSeconds = [] {

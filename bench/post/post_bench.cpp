@@ -10,6 +10,7 @@
 #include "engine/comm.hpp"
 #include "engine/model.hpp"
 #include "engine/simulation.hpp"
+#include "io/standard_outputs.hpp"
 #include "io/vtu_output.hpp"
 #include "post/picture_output.hpp"
 
@@ -20,17 +21,16 @@ int main(int argc, char** argv) {
   const std::string dir = argc > 3 ? argv[3] : "post_bench_out";
   pdq::Params p("bench");
   p.set("critical_stretch", "0.01");
-  auto model = pdq::ModelRegistry::create("spring");
-  model->configure(p);
-  const pdq::Schema s = model->schema();
-  pdq::ParticleSet ps;
+  pdq::Problem pb = pdq::makeProblem("spring", p, {});
+  const pdq::Schema s = pb.model->schema();
+  pdq::ParticleSet& ps = pb.particles;
   ps.nFixed = s.nFixed();
   ps.nAlter = s.nAlter();
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) ps.add(static_cast<pdq::Gid>(j) * nx + i, i, j, 0);
-  pdq::RunConfig cfg;
-  cfg.outDir = dir;
-  pdq::Simulation sim(std::move(model), std::move(ps), cfg, comm);
+  pb.run.outDir = dir;
+  const auto simulation = pdq::makeSimulation(std::move(pb), comm);
+  pdq::Simulation& sim = *simulation;
   sim.setup();
   // Break a "crack" of bonds so the picture has something to draw.
   for (std::size_t i = 0; i < sim.particles().owned(); ++i)
