@@ -1,7 +1,7 @@
 // An out-of-tree model for pdq: atoms interacting through the Morse potential
 //     U(r) = D [(1 - exp(-a (r - r0)))^2 - 1]      (cut off at r_cut)
-// integrated with the leapfrog (kick-drift) scheme, and a generator that builds a
-// simple-cubic block of atoms to start from. Loaded at run time:
+// moved by pdq's integrator (velocity Verlet), and a generator that builds a simple-cubic
+// block of atoms to start from. Loaded at run time:
 //     pdq run cluster.toml --plugin build/libmorse.so
 // Only pdq's installed headers are used; docs/write-your-own-model.md walks through it.
 #include <cmath>
@@ -62,19 +62,9 @@ class Morse final : public pdq::Model {
   // Forces (and energies) before the first step, so that step 0's history has them.
   void prepare(pdq::Context& ctx) override { force(ctx); }
 
-  void integrate(pdq::Context& ctx) override {
-    pdq::Particles& P = ctx.particles;
-    const double h = ctx.dt();
-    const long n = static_cast<long>(P.owned());
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      double* x = P.alter(i);
-      const double* F = P.integ(i);
-      for (int a = 0; a < 3; ++a) {
-        x[VX + a] += F[FX + a] / mass_ * h;
-        x[X + a] += x[VX + a] * h;
-      }
-    }
+  // The engine integrates x y z, vx vy vz with forces fx fy fz; it needs the masses.
+  void bodies(const pdq::Context&, std::span<pdq::Body> owned) const override {
+    for (pdq::Body& b : owned) b.mass = mass_;
   }
 
   std::vector<std::string> globals() const override { return {"kinetic", "potential"}; }

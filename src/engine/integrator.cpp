@@ -1,6 +1,7 @@
 #include "engine/integrator.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "engine/context.hpp"
@@ -43,6 +44,32 @@ void rotationVector(const double* q[4], double out[3]) {
 }
 
 }  // namespace
+
+Loading readLoading(const Params& p) {
+  constexpr double big = 1e300;
+  Loading l;
+  l.scale = p.number("load_scale", l.scale, -big, big);
+  l.rampTime = p.number("ramp_time", l.rampTime, 0.0, big);
+  l.holdTime = p.number("hold_time", l.holdTime, 0.0, big);
+  l.holdDampingRatio = p.number("hold_damping_ratio", l.holdDampingRatio, 0.0, big);
+  return l;
+}
+
+std::string writeLoading(const Loading& l) {
+  const Loading none;
+  std::string out;
+  auto line = [&](const char* key, double v, double fallback) {
+    if (v == fallback) return;
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%s %.17g\n", key, v);
+    out += buf;
+  };
+  line("load_scale", l.scale, none.scale);
+  line("ramp_time", l.rampTime, none.rampTime);
+  line("hold_time", l.holdTime, none.holdTime);
+  line("hold_damping_ratio", l.holdDampingRatio, none.holdDampingRatio);
+  return out;
+}
 
 void Integrator::resolve(const Schema& s) {
   const Motion m = model_.motion();

@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/params.hpp"
 #include "engine/schema.hpp"
 
 namespace pdq {
@@ -49,6 +50,12 @@ struct Loading {
   }
   bool held(double t) const { return !(rampTime > 0 && t < rampTime); }
 };
+
+// The protocol from the keys load_scale, ramp_time, hold_time, hold_damping_ratio (the
+// scenario's [loading] table, or pdQInput.dat); `writeLoading` gives the keys that differ
+// from the defaults, one "key value" line each (17 digits).
+Loading readLoading(const Params& p);
+std::string writeLoading(const Loading& l);
 
 enum class Rotation { None, Planar, Spatial };
 

@@ -116,8 +116,9 @@ Problem readThesisInput(const std::string& dir) {
   }
   pb.run.minCellSize = head[3];
   if (!(head[3] > 0)) throw InputError(input, lastLine, "the minimum cell size must be positive");
-  if (head[4] < 0 || head[4] != static_cast<long>(head[4]))
-    throw InputError(input, lastLine, "the number of time steps must be a whole number >= 0");
+  if (head[4] < -1 || head[4] != static_cast<long>(head[4]))
+    throw InputError(input, lastLine,
+                     "the number of time steps must be a whole number >= 0 (or -1 with hold_time)");
   pb.run.steps = static_cast<long>(head[4]);
   pb.run.source = input;
   Params engine("pdQInput.dat");
@@ -141,6 +142,11 @@ Problem readThesisInput(const std::string& dir) {
     for (double v : engine.numbers("history_ids"))
       pb.output.historyIds.push_back(static_cast<Gid>(v));
   pb.output.globalsEvery = engine.integer("globals_every", 0);
+  pb.run.loading = readLoading(engine);
+  if ((pb.run.steps < 0) != engine.has("hold_time"))
+    throw InputError(input, lastLine,
+                     "give the run's length as the number of steps or as hold_time (with steps "
+                     "-1), not both");
   engine.checkAllUsed();
 
   // pdQUserInput.dat: the model and its parameters.
@@ -204,6 +210,7 @@ void writeThesisInput(const std::string& dir, const Problem& pb, const Params& m
     in << "\n";
   }
   if (pb.output.globalsEvery) in << "globals_every " << pb.output.globalsEvery << "\n";
+  in << writeLoading(pb.run.loading);
   writeFileAtomically(dir + "/pdQInput.dat", in.str());
   std::ostringstream user;
   user << "model " << pb.modelName << "\n";

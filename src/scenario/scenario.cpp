@@ -307,11 +307,22 @@ Scenario readScenario(const std::string& path) {
   pb.source = path;
   pb.run.source = path;
   Params top = tableParams(root, path, "the scenario");
-  for (const char* k : {"model", "particles", "decomposition", "output", "strength"}) top.accept(k);
+  for (const char* k : {"model", "particles", "decomposition", "output", "strength", "loading"})
+    top.accept(k);
   top.text("description", "");
-  if (!top.has("steps")) throw InputError(path, 0, "missing steps = N (the number of time steps)");
-  pb.run.steps = top.integer("steps");
-  if (pb.run.steps < 0) throw InputError(path, top.raw("steps")->line, "steps must be >= 0");
+  const toml::table* lt = subTable(root, "loading", path);
+  const Params loading = lt ? tableParams(*lt, path, "[loading]") : Params("[loading]");
+  pb.run.loading = readLoading(loading);
+  loading.checkAllUsed();
+  if (!top.has("steps") && !loading.has("hold_time"))
+    throw InputError(path, 0,
+                     "missing steps = N (the number of time steps; or [loading] hold_time)");
+  if (top.has("steps") && loading.has("hold_time"))
+    throw InputError(path, top.raw("steps")->line,
+                     "give the run's length as steps = N or as [loading] hold_time, not both");
+  pb.run.steps = top.integer("steps", -1);
+  if (top.has("steps") && pb.run.steps < 0)
+    throw InputError(path, top.raw("steps")->line, "steps must be >= 0");
   top.checkAllUsed();
 
   readModel(root, path, sc);

@@ -14,19 +14,19 @@
 namespace pdq::strength {
 namespace {
 
-// How a trial loads the structure: its peak (× the problem's loads), the ramp to it and
-// the run in steps, and the hold-phase damping.
+// How a trial loads the structure: its peak (× the problem's loads), the ramp to it (in
+// simulated time, and the steps it takes), the run in steps, and the hold-phase damping.
 struct Loading {
-  double scale = 1;
+  double scale = 1, rampTime = 0;
   long rampSteps = 0, steps = 0;
   double holdDamping = 0;
 };
 
-// The one place that turns a Loading into the model's parameters and the run's length.
-void applyLoading(const Loading& l, Params& model, RunConfig& run) {
-  model.set("load_scale", numberText(l.scale));
-  model.set("hold_damping_ratio", numberText(l.holdDamping));
-  model.set("ramp_fraction", numberText(static_cast<double>(l.rampSteps) / l.steps));
+// The one place that turns a Loading into the run's load protocol and length.
+void applyLoading(const Loading& l, RunConfig& run) {
+  run.loading.scale = l.scale;
+  run.loading.rampTime = l.rampTime;
+  run.loading.holdDampingRatio = l.holdDamping;
   run.steps = l.steps;
 }
 
@@ -43,18 +43,23 @@ std::unique_ptr<Simulation> simulation(const Case& c, const Params& params, RunC
 // time step or (stableStep) the model's stable one, read once from the model set up.
 Loading schedule(const Case& c, Comm& comm, const Options& opt) {
   Params p = c.params;
-  long steps = static_cast<long>(std::ceil(c.run.steps * opt.timeScale));
-  if (opt.stableStep) {
-    const double duration = steps * p.number("dt", 0.0);
-    p.set("dt", "0");
+  const double dt0 = p.number("dt", 0.0);
+  if (opt.stableStep) p.set("dt", "0");
+  double dt = p.number("dt", 0.0);
+  if (!(dt > 0)) {
     RunConfig run = c.run;
     run.steps = 1;
     run.outDir = ".";
-    const double dt = simulation(c, p, run, comm)->context().dt();
-    if (duration > 0) steps = static_cast<long>(std::ceil(duration / dt));
+    dt = simulation(c, p, run, comm)->context().dt();
   }
+  const pdq::Loading& pl = c.run.loading;
+  // The problem's simulated time: its steps at its own time step, or its ramp and hold.
+  const double duration = opt.timeScale * (c.run.steps >= 0 ? c.run.steps * (dt0 > 0 ? dt0 : dt)
+                                                            : pl.rampTime + pl.holdTime);
+  const long steps = static_cast<long>(std::ceil(duration / dt - 1e-9));
   Loading l;
-  l.rampSteps = static_cast<long>(std::ceil(p.number("ramp_fraction", 0.75) * steps));
+  l.rampTime = opt.timeScale * pl.rampTime;
+  l.rampSteps = static_cast<long>(std::ceil(l.rampTime / dt - 1e-9));
   l.steps = l.rampSteps + static_cast<long>(std::ceil(opt.holdLength * (steps - l.rampSteps)));
   l.holdDamping = opt.holdDamping;
   return l;
@@ -92,7 +97,7 @@ Trial runTrial(const Case& c, Loading l, double load, int index, Comm& comm, con
   RunConfig run = c.run;
   run.outDir = tr.dir.empty() ? "." : tr.dir;
   if (opt.stableStep) p.set("dt", "0");
-  applyLoading(l, p, run);
+  applyLoading(l, run);
   auto simPtr = simulation(c, p, run, comm);
   Simulation& sim = *simPtr;
   const StrengthSpec spec = sim.model().strengthSpec();

@@ -106,6 +106,7 @@ value = 1.0
     d["mplm2d"] = problem(R"([model]
 name = "mplm2d"
 dt = 1.0e-6
+[loading]
 load_scale = 500
 [particles]
 generator = "mplm_beam"

@@ -43,7 +43,6 @@ TEST(Cantilever, TipDeflectionMatchesBeamTheory) {
     return test::simulation(comm,
                             test::params({{"thickness", std::to_string(t)},
                                           {"damage", "false"},
-                                          {"ramp_fraction", "0"},
                                           {"viscous_damping", std::to_string(2 * omega1)}}),
                             ps, steps);
   };

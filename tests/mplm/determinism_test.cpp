@@ -26,8 +26,9 @@ struct Case {
 pdq::test::State runAndGather(const Case& c, double load, MPI_Comm mpiComm) {
   Comm comm(mpiComm);
   Params p = c.params;
-  p.set("load_scale", std::to_string(load));
-  auto sim = test::simulation(comm, p, c.particles, c.steps);
+  Loading loading;
+  loading.scale = load;
+  auto sim = test::simulation(comm, p, c.particles, c.steps, "mplm2d", loading);
   sim->run();
   return pdq::test::gatherState(*sim);
 }

@@ -31,8 +31,9 @@ using pdq::test::global;
 using pdq::test::params;
 
 inline std::unique_ptr<Simulation> simulation(Comm& comm, const Params& p, ParticleSet ps,
-                                              long steps, const std::string& modelName = "mplm2d") {
-  return pdq::test::simulation(comm, modelName, p, std::move(ps), steps);
+                                              long steps, const std::string& modelName = "mplm2d",
+                                              const Loading& loading = {}) {
+  return pdq::test::simulation(comm, modelName, p, std::move(ps), steps, loading);
 }
 
 }  // namespace pdq::mplm::test

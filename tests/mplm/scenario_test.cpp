@@ -111,7 +111,8 @@ TEST(MplmScenarios, BearingsPushButNeverPull) {
 name = "mplm2d"
 damage = false
 viscous_damping = 20000
-ramp_fraction = 0.5
+[loading]
+ramp_time = 0.004
 [particles]
 generator = "mplm_plate"
 width = 0.2

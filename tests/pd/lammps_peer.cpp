@@ -45,8 +45,10 @@ ParticleSet blockParticles(const Block& bl, const Schema& schema) {
   ps.nAlter = schema.nAlter();
   prep::appendLattice(ps, prep::cubicLattice(bl.n, bl.n, bl.n, bl.s));
   const int vol = schema.fixedIndex("volume"), vx = schema.alterIndex("vx");
+  const int fz = schema.fixedIndex("fz");
   for (std::size_t k = 0; k < ps.size(); ++k) {
     ps.fixedRow(k)[vol] = bl.s * bl.s * bl.s;
+    if (ps.fixedRow(k)[2] > (bl.n - 1.5) * bl.s) ps.fixedRow(k)[fz] = bl.topLoad;
     bl.velocity(ps.fixedRow(k), ps.alterRow(k) + vx);
   }
   return ps;
@@ -89,8 +91,12 @@ void writeLammps(const Block& bl, const std::string& model, long steps, const st
   // LAMMPS judges bond breaking against the previous step's critical stretch s0, which
   // is not yet set on the first step (in the Debian 2021 package, peri/lps breaks every
   // stretched bond there); a first step of zero length stretches nothing and sets it.
-  in << "neighbor " << 0.1 * bl.s << " bin\nfix 1 all nve\ntimestep 0\nrun 1\ntimestep " << bl.dt
-     << "\nthermo " << steps << "\nrun " << steps << "\n"
+  in << "neighbor " << 0.1 * bl.s << " bin\nfix 1 all nve\n";
+  if (bl.topLoad != 0)  // LAMMPS's peri forces are force densities: the load over the volume
+    in << "region top block INF INF INF INF " << (bl.n - 1.5) * bl.s
+       << " INF units box\ngroup top region top\nfix 2 top addforce 0 0 "
+       << bl.topLoad / (bl.s * bl.s * bl.s) << "\n";
+  in << "timestep 0\nrun 1\ntimestep " << bl.dt << "\nthermo " << steps << "\nrun " << steps << "\n"
      << "write_dump all custom lammps.dump id x y z modify sort id format float %.17g\n";
   writeFileAtomically(dir + "/lammps.in", in.str());
 }

@@ -2,7 +2,8 @@
 // The 3D block problem that pdq and LAMMPS's PERI package both run, for the side-by-side
 // comparison (bench/pd/run.sh and tests/pd/test_pd_lammps.cpp): an n×n×n simple-cubic
 // lattice, δ = 3 s, partial volumes, no breaking, no damping, started at the reference
-// positions from a smooth velocity field. Unit mapping (docs/peridynamics.md): LAMMPS
+// positions from a smooth velocity field (and, optionally, pulled at its top layer from
+// step 0: LAMMPS's fix addforce). Unit mapping (docs/peridynamics.md): LAMMPS
 // units si; atom_style peri "volume" = pdq volume, "density" (LAMMPS's rmass) = pdq
 // density; LAMMPS forces are force densities, so its f/ρ is pdq's acceleration.
 #include <array>
@@ -18,7 +19,8 @@ namespace pdq::lammps {
 struct Block {
   int n = 47;
   double s = 0.0254, E = 24.85e9, nu = 0.25, rho = 2323, dt = 1.0e-6;
-  double v0 = 0.5;  // m/s amplitude of the initial velocity field
+  double v0 = 0.5;     // m/s amplitude of the initial velocity field
+  double topLoad = 0;  // N along +Z on each particle of the top layer, from step 0
   double delta() const { return 3.0 * s; }
   void velocity(const double* X, double* v) const;
 };

@@ -1,5 +1,7 @@
 // pdq and LAMMPS's PERI package (peri/pmb, peri/lps) on the same undamped, undamaged 3D
-// block for 200 steps: every particle's displacement agrees to 1e-9 of the largest one.
+// block for 200 steps: every particle's displacement agrees to 1e-9 of the largest one,
+// from a velocity field, and (PMB) from rest pulled at its top layer from step 0, which
+// only a velocity Verlet started right (half a kick on the first step) reproduces.
 // Fails where LAMMPS's lmp is missing (installed by `make test`: tools/install-deps.sh test).
 #include <gtest/gtest.h>
 
@@ -13,13 +15,17 @@
 namespace pdq::pdtest {
 namespace {
 
-void sideBySide(const std::string& model) {
+void sideBySide(const std::string& model, double topLoad = 0) {
   Comm comm(MPI_COMM_WORLD);
   lammps::Block bl;
   bl.n = 10;
+  if (topLoad != 0) {
+    bl.v0 = 0;
+    bl.topLoad = topLoad;
+  }
   const long steps = 200;
-  const std::string dir =
-      std::filesystem::absolute("pd_lammps_" + model + "_np" + std::to_string(comm.size()));
+  const std::string dir = std::filesystem::absolute(
+      "pd_lammps_" + model + (topLoad != 0 ? "_loaded" : "") + "_np" + std::to_string(comm.size()));
   if (comm.root()) std::filesystem::create_directories(dir);
   pdq::Problem pb = makeProblem(model, lammps::blockParams(bl, model), {});
   pb.particles = lammps::blockParticles(bl, pb.model->schema());
@@ -58,6 +64,7 @@ void sideBySide(const std::string& model) {
 
 TEST(PdLammps, Pmb) { sideBySide("pmb"); }
 TEST(PdLammps, Lps) { sideBySide("lps"); }
+TEST(PdLammps, PmbLoadedFromRest) { sideBySide("pmb", 2.0e4); }
 
 }  // namespace
 }  // namespace pdq::pdtest

@@ -86,9 +86,10 @@ Params params(const std::vector<std::pair<std::string, std::string>>& kv) {
 }
 
 std::unique_ptr<Simulation> simulation(Comm& comm, const std::string& model, const Params& params,
-                                       ParticleSet particles, long steps) {
+                                       ParticleSet particles, long steps, const Loading& loading) {
   RunConfig run;
   run.steps = steps;
+  run.loading = loading;
   auto sim = makeSimulation(makeProblem(model, params, std::move(particles), run), comm);
   sim->setup();
   return sim;

@@ -39,9 +39,11 @@ ParticleSet cubicBlock(const Schema& schema, int nx, int ny, int nz, double h);
 // Parameters from (key, value) texts, as a scenario's table gives them.
 Params params(const std::vector<std::pair<std::string, std::string>>& kv);
 
-// `model` configured with `params`, on `particles`, set up on `comm` to run `steps` steps.
+// `model` configured with `params`, on `particles`, set up on `comm` to run `steps` steps
+// under the load protocol `loading`.
 std::unique_ptr<Simulation> simulation(Comm& comm, const std::string& model, const Params& params,
-                                       ParticleSet particles, long steps);
+                                       ParticleSet particles, long steps,
+                                       const Loading& loading = {});
 
 // A global of the model by name (load, displacement, energies): a collective call.
 double global(Simulation& sim, const std::string& name);

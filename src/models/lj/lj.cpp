@@ -9,13 +9,12 @@
 //                until the next one. Lists are sorted by global ID (see verlet_list.hpp).
 //   force        full lists: each owned particle sums its own force, so threads need no
 //                atomics and the ghosts need no forces sent back.
-//   integration  the leapfrog form of velocity Verlet, kick then drift:
-//                    v(n+1/2) = v(n-1/2) + F(n) dt / m,   x(n+1) = x(n) + v(n+1/2) dt.
-//                The stored velocity is therefore the half-step one, v(n-1/2) next to
-//                x(n); initial velocities are read as v(-1/2).
+//   integration  the engine's velocity Verlet (leapfrog form, engine/integrator.hpp): the
+//                stored velocity is v(0) at step 0 and the half-step v(n-1/2) after.
 //   globals      potential, kinetic and total energy and temperature at the current
-//                step n, with the kinetic energy from v(n) = (v(n-1/2) + v(n+1/2)) / 2,
-//                which needs F(n): the globals evaluate the forces at x(n) once more.
+//                step n, with the kinetic energy from v(n) = v(n-1/2) + F(n) dt / 2m
+//                (v(0) at step 0), which needs F(n): the globals evaluate the forces at
+//                x(n) once more.
 #include <omp.h>
 
 #include <algorithm>
@@ -60,19 +59,8 @@ class LennardJones final : public Model {
 
   void force(Context& ctx) override { evaluate(ctx.particles, forces(ctx.particles), nullptr); }
 
-  void integrate(Context& ctx) override {
-    Particles& P = ctx.particles;
-    const double h = ctx.dt(), hm = h / mass_;
-    const long n = static_cast<long>(P.owned());
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      double* x = P.alter(i);
-      const double* F = P.integ(i);
-      for (int a = 0; a < 3; ++a) {
-        x[VX + a] += F[FX + a] * hm;
-        x[X + a] += x[VX + a] * h;
-      }
-    }
+  void bodies(const Context&, std::span<Body> owned) const override {
+    for (Body& b : owned) b.mass = mass_;
   }
 
   std::vector<std::string> fields() const override { return {"potential_energy"}; }
@@ -87,16 +75,13 @@ class LennardJones final : public Model {
     Particles& P = ctx.particles;
     energy_.resize(P.owned());
     evaluate(P, forces(P), energy_.data());
-    const double hm = ctx.dt() / mass_;
+    const double half = ctx.step() == 0 ? 0.0 : 0.5 * ctx.dt() / mass_;
     const double pe = ctx.sumOwned([&](std::size_t i) { return energy_[i]; });
     const double ke = ctx.sumOwned([&](std::size_t i) {
       const double* x = P.alter(i);
       const double* F = P.integ(i);
       double v2 = 0;
-      for (int a = 0; a < 3; ++a) {
-        const double next = x[VX + a] + F[FX + a] * hm;  // v(n+1/2), as integrate() makes it
-        v2 += sq(0.5 * (x[VX + a] + next));
-      }
+      for (int a = 0; a < 3; ++a) v2 += sq(x[VX + a] + F[FX + a] * half);
       return 0.5 * mass_ * v2;
     });
     const long n = ctx.count(static_cast<long>(P.owned()));

@@ -124,23 +124,23 @@ std::vector<double> PeriModel::onGhosts(Context& ctx, const std::vector<double>&
   return all;
 }
 
-// Leapfrog (kick, then drift) with the velocity at half steps: from rest, or from a
-// velocity field at zero displacement, the positions are those of velocity Verlet.
-// Damping is viscous, a = F/m - damping v. A prescribed axis keeps its velocity.
-void PeriModel::integrate(Context& ctx) {
-  Particles& P = ctx.particles;
-  const double h = ctx.dt(), c = damping_, rho = density_;
-  const long n = static_cast<long>(P.owned());
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    double* x = P.alter(i);
-    const double* f = P.fixed(i);
-    const double* a = P.integ(i);
-    const double invMass = 1.0 / (rho * f[VOLUME]);
+// The kernels give accelerations (force densities over the density); damping is viscous,
+// a = F/m - damping v; a prescribed axis keeps its initial velocity.
+Motion PeriModel::motion() const {
+  Motion m;
+  m.force = {"ax", "ay", "az"};
+  m.perMass = true;
+  m.damping = damping_;
+  return m;
+}
+
+void PeriModel::bodies(const Context& ctx, std::span<Body> owned) const {
+  for (std::size_t i = 0; i < owned.size(); ++i) {
+    const double* f = ctx.particles.fixed(i);
+    owned[i].mass = density_ * f[VOLUME];
     for (int k = 0; k < 3; ++k) {
-      const double acc = a[AX + k] + f[FX + k] * invMass - c * x[VX + k];
-      if (f[BCX + k] == 0) x[VX + k] += h * acc;
-      x[X + k] += h * x[VX + k];
+      owned[i].load[k] = f[FX + k];
+      if (f[BCX + k] != 0) owned[i].constraint[k] = Constraint::KeepVelocity;
     }
   }
 }

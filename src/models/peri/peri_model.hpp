@@ -1,14 +1,15 @@
 #pragma once
 // What the peridynamic models (PMB, LPS) share: parameters, particle attributes, bonds
 // within the horizon built from reference positions, the partial-volume weight of bonds
-// near the horizon, supports and applied loads, time integration, damage and energies.
+// near the horizon, supports and applied loads (for the engine's integrator), damage and
+// energies.
 // A concrete model adds its bond constants (setupBonds) and its force kernel.
 //
 // Units are any consistent set (SI in the examples). Attributes:
 //   fixed  X Y Z  bc_x bc_y bc_z  fx fy fz  volume
 //          bc_a = 1: the velocity along a is prescribed (kept at its initial value; 0 = a
 //          support); fx fy fz: applied force on the particle (not a force density)
-//   alter  x y z  vx vy vz  [model columns]   velocities at half steps (leapfrog)
+//   alter  x y z  vx vy vz  [model columns]   velocities (half-step ones after step 0)
 //   integ  ax ay az                           acceleration from the bonds
 //   bond   xi  weight  [model columns]        reference length |ξ|, and the bond's
 //                                             constant, 0 once the bond has broken
@@ -33,7 +34,8 @@ class PeriModel : public Model {
   double horizon() const final { return delta_; }
   void setup(Context& ctx) final;
   void prepare(Context& ctx) final;
-  void integrate(Context& ctx) final;
+  Motion motion() const final;
+  void bodies(const Context& ctx, std::span<Body> owned) const final;
 
   std::vector<std::string> fields() const override { return {"damage", "energy_density"}; }
   void field(const Context& ctx, int k, std::span<double> out) const override;

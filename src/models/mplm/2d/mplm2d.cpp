@@ -1,9 +1,9 @@
 // The micropolar peridynamic lattice model in 2D (thesis chapter 4), registered as
 // "mplm2d": particles on a hexagonal lattice with DOFs u_x, u_y, θ_z, interacting with
 // their six nearest neighbours through the beam-like stiffness of eq. 4.3, damaged by the
-// laws of §4.3.2, damped by eq. 4.21, reinforced by steel bars (§4.3.4), and integrated by
-// velocity Verlet in its leapfrog form. Loads ramp linearly to a fraction of the run and
-// are then held (§4.4).
+// laws of §4.3.2, damped by eq. 4.21, reinforced by steel bars (§4.3.4), and moved by the
+// engine's integrator (velocity Verlet; loads and prescribed displacements follow the
+// engine's load protocol: a linear ramp, then held, §4.4).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -110,41 +110,33 @@ class Mplm2d final : public Model {
     }
   }
 
-  // Leapfrog: v(n+½) = v(n−½) + a(n) Δt, x(n+1) = x(n) + v(n+½) Δt, for translations and
-  // rotations alike. Constrained DOFs follow their prescribed (ramped) values.
-  void integrate(Context& ctx) override {
-    Particles& P = ctx.particles;
-    const double h = ctx.dt();
-    const double loadNow = par_.loadScale * ramp(ctx, ctx.step() - 1);
-    const double dispNext = par_.loadScale * ramp(ctx, ctx.step());
-    const bool held = ramp(ctx, ctx.step() - 1) >= 1;
-    if (held && par_.holdDampingRatio > 0 && holdViscous_ < 0) holdViscous_ = holdDamping(ctx);
-    const double viscous = par_.viscous + (held && holdViscous_ > 0 ? holdViscous_ : 0.0);
-    const long n = static_cast<long>(P.owned());
-    constexpr int pos[3] = {AX, AY, THETA}, vel[3] = {VX, VY, OMEGA};
+  // Translations u_x, u_y and the rotation θ_z; supports, bearings and loads from the
+  // particle's constraint bits and its load and displacement columns.
+  Motion motion() const override {
+    Motion m;
+    m.position = {"x", "y"};
+    m.velocity = {"vx", "vy"};
+    m.force = {"fx", "fy"};
+    m.rotation = Rotation::Planar;
+    m.orientation = {"theta"};
+    m.angularVelocity = {"omega"};
+    m.moment = {"mz"};
+    m.damping = par_.viscous;
+    return m;
+  }
+  void bodies(const Context& ctx, std::span<Body> owned) const override {
     constexpr int bit[3] = {FIX_X, FIX_Y, FIX_T};
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      double* a = P.alter(i);
-      const double* X = P.fixed(i);
-      const double* F = P.integ(i);
-      const double inv[3] = {1 / in_.mass[i], 1 / in_.mass[i], 1 / in_.inertia[i]};
-      const double ref[3] = {X[FX_X], X[FX_Y], 0.0};
+    for (std::size_t i = 0; i < owned.size(); ++i) {
+      const double* X = ctx.particles.fixed(i);
+      Body& b = owned[i];
+      b.mass = in_.mass[i];
+      b.inertia = in_.inertia[i];
       for (int d = 0; d < 3; ++d) {
-        if (in_.constraint[i] & bit[d]) {
-          const double target = ref[d] + X[DISP_X + d] * dispNext;
-          a[vel[d]] = (target - a[pos[d]]) / h;
-          a[pos[d]] = target;
-        } else {
-          const double acc = (F[d] + X[LOAD_X + d] * loadNow) * inv[d] - viscous * a[vel[d]];
-          a[vel[d]] += acc * h;
-          a[pos[d]] += a[vel[d]] * h;
-        }
+        b.load[d] = X[LOAD_X + d];
+        b.value[d] = X[DISP_X + d];
+        if (in_.constraint[i] & bit[d]) b.constraint[d] = pdq::Constraint::Prescribed;
       }
-      if ((in_.constraint[i] & (REST_Y | FIX_Y)) == REST_Y && a[AY] < ref[1]) {
-        a[AY] = ref[1];  // on the support: no penetration, no bounce
-        a[VY] = 0;
-      }
+      if ((in_.constraint[i] & (REST_Y | FIX_Y)) == REST_Y) b.constraint[1] = pdq::Constraint::Resting;
     }
   }
 
@@ -196,7 +188,7 @@ class Mplm2d final : public Model {
   std::vector<double> globalValues(Context& ctx) override {
     const Particles& P = ctx.particles;
     const Bonds& B = ctx.bonds;
-    const double lf = par_.loadScale * ramp(ctx, ctx.step());
+    const double lf = ctx.loadFactor();
     auto sum = [&](auto f) { return ctx.sumOwned(f); };
     const double lx = lf * sum([&](std::size_t i) { return P.fixed(i)[LOAD_X]; });
     const double ly = lf * sum([&](std::size_t i) { return P.fixed(i)[LOAD_Y]; });
@@ -360,32 +352,6 @@ class Mplm2d final : public Model {
     return mplm::highestFrequency(ctx, sys, restoring, par_.powerIterations);
   }
 
-  // 2 ζ_h ω₁, ω₁² = F·u / (u·M·u) the Rayleigh quotient of the current deflection under
-  // the held loads (close to static by the end of a slow ramp); 0 without loads.
-  double holdDamping(Context& ctx) const {
-    const Particles& P = ctx.particles;
-    const double scale = par_.loadScale;
-    const double work = ctx.sumOwned([&](std::size_t i) {
-      const double* X = P.fixed(i);
-      const double* a = P.alter(i);
-      return scale *
-             (X[LOAD_X] * (a[AX] - X[FX_X]) + X[LOAD_Y] * (a[AY] - X[FX_Y]) + X[LOAD_M] * a[THETA]);
-    });
-    const double inertia = ctx.sumOwned([&](std::size_t i) {
-      const double* X = P.fixed(i);
-      const double* a = P.alter(i);
-      const double ux = a[AX] - X[FX_X], uy = a[AY] - X[FX_Y];
-      return in_.mass[i] * (ux * ux + uy * uy) + in_.inertia[i] * a[THETA] * a[THETA];
-    });
-    if (!(work > 0 && inertia > 0)) return 0;
-    const double omega1 = std::sqrt(work / inertia);
-    if (ctx.root())
-      ctx.log() << "mplm2d: loads held from step " << ctx.step() << "; Rayleigh frequency "
-                << omega1 << " rad/s, hold damping " << 2 * par_.holdDampingRatio * omega1
-                << " 1/s\n";
-    return 2 * par_.holdDampingRatio * omega1;
-  }
-
   // Where the badly damaged (ω ≥ ½) concrete interactions are: mostly compressive →
   // "compression"; without supports (a plate loaded at both ends) → "tension"; else a
   // beam: "flexural" when most lie in the middle third between its supports, else "shear".
@@ -449,13 +415,6 @@ class Mplm2d final : public Model {
     }
   }
 
-  // Load factor at a step: linear up to rampFraction of the run, then held.
-  double ramp(const Context& ctx, long step) const {
-    const double rampSteps = par_.rampFraction * static_cast<double>(ctx.steps());
-    if (!(rampSteps > 0)) return 1.0;
-    return std::min(1.0, static_cast<double>(step) / rampSteps);
-  }
-
   // Virial stress of particle i from its elastic interactions (no damping):
   // σ = (1/2ΔV) Σ_j r_ij ⊗ f_ij, symmetrised; ΔV the particle's volume.
   std::array<double, 3> stress(const Context& ctx, std::size_t i) const {
@@ -485,7 +444,6 @@ class Mplm2d final : public Model {
   std::vector<double> cs_;          // cos θ, sin θ per local particle (co-rotational form)
   Inertia in_;
   double omegaMax_ = 0;
-  double holdViscous_ = -1;  // hold-phase damping, once computed
 };
 
 PDQ_REGISTER_MODEL(Mplm2d, "mplm2d",

@@ -127,16 +127,26 @@ class Mplm3d final : public Model {
     }
   }
 
+  // The hold-phase damping, once computed, continues after a restart.
+  std::vector<double> saveState() const override { return {holdViscous_}; }
+  void loadState(std::span<const double> saved) override {
+    if (saved.size() == 1) holdViscous_ = saved[0];
+  }
+
   // Leapfrog: v(n+½) = v(n−½) + a(n) Δt, x(n+1) = x(n) + v(n+½) Δt; likewise
   // ω(n+½) = ω(n−½) + I⁻¹ M(n) Δt and the orientation turns by exp(ω(n+½) Δt)
   // (models/mplm/3d/rotation.hpp). Constrained DOFs follow their prescribed (ramped) values.
+  // Its own integrator: the orientation is a rotation vector (the engine's keeps a quaternion);
+  // loads follow the engine's load protocol.
   void integrate(Context& ctx) override {
     Particles& P = ctx.particles;
     const double h = ctx.dt();
-    const double loadNow = par_.loadScale * ramp(ctx, ctx.step() - 1);
-    const double dispNext = par_.loadScale * ramp(ctx, ctx.step());
-    const bool held = ramp(ctx, ctx.step() - 1) >= 1;
-    if (held && par_.holdDampingRatio > 0 && holdViscous_ < 0) holdViscous_ = holdDamping(ctx);
+    const Loading& L = ctx.loading();
+    const double tNow = static_cast<double>(ctx.step() - 1) * h;
+    const double loadNow = L.factor(tNow);
+    const double dispNext = L.factor(static_cast<double>(ctx.step()) * h);
+    const bool held = L.held(tNow);
+    if (held && L.holdDampingRatio > 0 && holdViscous_ < 0) holdViscous_ = holdDamping(ctx);
     const double viscous = par_.viscous + (held && holdViscous_ > 0 ? holdViscous_ : 0.0);
     const long n = static_cast<long>(P.owned());
 #pragma omp parallel for schedule(static)
@@ -226,7 +236,7 @@ class Mplm3d final : public Model {
   std::vector<double> globalValues(Context& ctx) override {
     const Particles& P = ctx.particles;
     const Bonds& B = ctx.bonds;
-    const double lf = par_.loadScale * ramp(ctx, ctx.step());
+    const double lf = ctx.loadFactor();
     auto sum = [&](auto f) { return ctx.sumOwned(f); };
     const double nMon = sum([&](std::size_t i) { return P.fixed(i)[MONITOR]; });
     const double mean = nMon > 0 ? 1 / nMon : 0.0;
@@ -396,7 +406,7 @@ class Mplm3d final : public Model {
       double w = 0;
       for (int d = 0; d < 3; ++d)
         w += X[LOAD_X + d] * (a[AX + d] - X[FX_X + d]) + X[LOAD_MX + d] * a[RX + d];
-      return par_.loadScale * w;
+      return ctx.loading().scale * w;
     });
     const double inertia = ctx.sumOwned([&](std::size_t i) {
       const double* X = P.fixed(i);
@@ -412,9 +422,9 @@ class Mplm3d final : public Model {
     const double omega1 = std::sqrt(work / inertia);
     if (ctx.root())
       ctx.log() << "mplm3d: loads held from step " << ctx.step() << "; Rayleigh frequency "
-                << omega1 << " rad/s, hold damping " << 2 * par_.holdDampingRatio * omega1
+                << omega1 << " rad/s, hold damping " << 2 * ctx.loading().holdDampingRatio * omega1
                 << " 1/s\n";
-    return 2 * par_.holdDampingRatio * omega1;
+    return 2 * ctx.loading().holdDampingRatio * omega1;
   }
 
   // How the member failed, from its interactions damaged past ω = 0.5: "compression" when
@@ -465,13 +475,6 @@ class Mplm3d final : public Model {
     if (c > t) return "compression";
     if (!supported) return "tension";
     return m > total / 2 ? "flexural" : "shear";
-  }
-
-  // Load factor at a step: linear up to rampFraction of the run, then held.
-  double ramp(const Context& ctx, long step) const {
-    const double rampSteps = par_.rampFraction * static_cast<double>(ctx.steps());
-    if (!(rampSteps > 0)) return 1.0;
-    return std::min(1.0, static_cast<double>(step) / rampSteps);
   }
 
   // Virial stress of particle i from its elastic interactions (no damping), with the

@@ -33,13 +33,10 @@ void Parameters::read(const Params& p) {
   zeta = p.number("damping_ratio", zeta, 0.0, 10.0);
   zetaRotation = p.number("rotational_damping_ratio", zetaRotation, 0.0, 10.0);
   viscous = p.number("viscous_damping", viscous, 0.0, big);
-  holdDampingRatio = p.number("hold_damping_ratio", holdDampingRatio, 0.0, big);
   dt = p.number("dt", dt, 0.0, big);
   dtSafety = p.number("dt_safety", dtSafety, 1e-6, 1.0);
   powerIterations = static_cast<int>(p.integer("power_iterations", powerIterations));
   if (powerIterations < 1) throw InputError(p.owner(), 0, "power_iterations must be >= 1");
-  rampFraction = p.number("ramp_fraction", rampFraction, 0.0, 1.0);
-  loadScale = p.number("load_scale", loadScale, -big, big);
 }
 
 double Parameters::steelMass(double area) const { return steelRho * area * s; }

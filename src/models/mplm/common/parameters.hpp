@@ -31,15 +31,9 @@ struct Parameters {
   double zeta = 0.05;          // ζ of relative translational velocity
   double zetaRotation = 0.05;  // ζ of relative angular velocity
   double viscous = 0;          // mass-proportional damping c/m (1/s), dynamic relaxation
-  // Once the loads are held, mass-proportional damping 2 ζ_h ω₁ with ω₁ the Rayleigh
-  // frequency of the deflected shape (strength search: lets a structure that stands settle).
-  double holdDampingRatio = 0;
-  double dt = 0;  // 0: from the highest frequency
+  double dt = 0;               // 0: from the highest frequency
   double dtSafety = 0.9;
   int powerIterations = 60;
-  // Loading
-  double rampFraction = 0.75;  // loads ramp linearly to this fraction of the run, then hold
-  double loadScale = 1;        // multiplies every load and prescribed displacement
 
   void read(const Params& p);
   double horizon() const { return horizonFactor * s; }
