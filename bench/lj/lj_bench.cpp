@@ -24,7 +24,7 @@ int main(int argc, char** argv) {
   }
   const int cells = std::atoi(argv[1]);
   const long steps = std::atol(argv[2]);
-  pdq::Comm comm(MPI_COMM_WORLD);
+  pdq::Comm comm;
 
   pdq::Params p("lj_bench");
   p.set("cutoff", "2.5");

@@ -180,7 +180,7 @@ int bandwidth() {
 
 int main(int argc, char** argv) {
   MpiSession mpi(&argc, &argv);
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   try {
     const std::string what = argc > 1 ? argv[1] : "";
     if (what == "cantilever") return cantilever(argc, argv, comm);

@@ -16,7 +16,7 @@
 
 int main(int argc, char** argv) {
   pdq::MpiSession mpi(&argc, &argv);
-  pdq::Comm comm(MPI_COMM_WORLD);
+  pdq::Comm comm;
   const int nx = argc > 1 ? std::atoi(argv[1]) : 700, ny = argc > 2 ? std::atoi(argv[2]) : 700;
   const std::string dir = argc > 3 ? argv[3] : "post_bench_out";
   pdq::Params p("bench");

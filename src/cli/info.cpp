@@ -9,7 +9,7 @@
 namespace pdq::cli {
 
 void infoCommand(const InfoOptions& o) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   Scenario sc = loadScenario(o.input);
   Problem& pb = sc.problem;
   const std::string modelName = pb.modelName, outDir = pb.run.outDir;

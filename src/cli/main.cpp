@@ -70,7 +70,7 @@ void list() {
 int main(int argc, char** argv) {
   pdq::MpiSession mpi(&argc, &argv);
   Guard guard;
-  const bool root = pdq::Comm(MPI_COMM_WORLD).root();
+  const bool root = pdq::Comm().root();
 
   CLI::App app{
       "pdq: parallel particle dynamics (peridynamics, lattice models, molecular dynamics).\n"

@@ -48,7 +48,7 @@ std::string latestRestart(const std::string& dir, const std::string& input) {
 }  // namespace
 
 void pictureCommand(const PictureCommandOptions& o) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   Scenario sc = loadScenario(o.input);
   Problem& pb = sc.problem;
   const std::string restart = o.restart.empty() ? latestRestart(pb.run.outDir, o.input) : o.restart;
@@ -90,7 +90,7 @@ void pictureCommand(const PictureCommandOptions& o) {
 }
 
 void plotCommand(const PlotCommandOptions& o) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   std::vector<post::Table> tables;
   for (const auto& t : o.tables) tables.push_back(post::readTable(t));
   std::vector<post::Series> series;

@@ -10,7 +10,7 @@
 namespace pdq::cli {
 
 void prepCommand(const PrepOptions& o) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   Scenario sc = readScenario(o.input);
   // pdQInput.dat always states the cell size: the scenario's default is the model's own.
   if (sc.problem.run.minCellSize <= 0) sc.problem.run.minCellSize = sc.problem.model->minCellSize();

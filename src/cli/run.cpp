@@ -14,7 +14,7 @@
 namespace pdq::cli {
 
 void runCommand(const RunOptions& o) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   Scenario sc = loadScenario(o.input);
   Problem& pb = sc.problem;
   if (!o.out.empty()) pb.run.outDir = o.out;

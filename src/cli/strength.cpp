@@ -6,7 +6,7 @@
 namespace pdq::cli {
 
 void strengthCommand(const StrengthCommandOptions& o) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   const Scenario sc = loadScenario(o.input);
   Params options = sc.strength;  // the scenario's [strength] table, then --set items
   setFromCommandLine(options, o.set);

@@ -1,8 +1,8 @@
 #pragma once
 // The only place that calls MPI. Point-to-point messages are counted (messages and bytes
 // sent to other ranks) so a run can report them per step, as the thesis's Table 3.5.
-#include <mpi.h>
-
+// <mpi.h> is included by comm.cpp only, so models (and out-of-tree plugins) build without
+// MPI's headers.
 #include <cstdint>
 #include <vector>
 
@@ -12,9 +12,11 @@ namespace pdq {
 
 class Comm {
  public:
-  // MPI must be initialised (see MpiSession). Tests run several simulations side by side
-  // on sub-communicators; the pdq command uses MPI_COMM_WORLD.
-  explicit Comm(MPI_Comm comm = MPI_COMM_WORLD);
+  // MPI must be initialised (see MpiSession). Comm() is MPI_COMM_WORLD, used by the pdq
+  // command; tests run several simulations side by side on sub-communicators, passed as
+  // an MPI_Comm (a pointer in Open MPI, hence void* here: comm.cpp checks it).
+  Comm();
+  explicit Comm(void* mpiComm);
   ~Comm();
   Comm(const Comm&) = delete;
   Comm& operator=(const Comm&) = delete;
@@ -52,7 +54,7 @@ class Comm {
   std::uint64_t bytes() const { return bytes_; }
 
  private:
-  MPI_Comm comm_;
+  void* comm_;          // the MPI_Comm
   bool owned_ = false;  // made by split(): freed on destruction
   int rank_ = 0, size_ = 1;
   std::uint64_t messages_ = 0, bytes_ = 0;

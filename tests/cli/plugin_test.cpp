@@ -15,6 +15,7 @@
 namespace fs = std::filesystem;
 using namespace pdq::test;
 using testing::HasSubstr;
+using testing::Not;
 
 TEST(CliPlugin, OutOfTreeModelBuiltAgainstTheInstalledHeaders) {
   const std::string dir = freshDir("plugin");
@@ -25,14 +26,28 @@ TEST(CliPlugin, OutOfTreeModelBuiltAgainstTheInstalledHeaders) {
             0)
       << readFile(dir + "/install.log");
   const std::string src = sourceDir() + "/examples/plugin";
+  // A model needs no MPI headers: the plugin's source compiles with the installed include
+  // directory alone (MPI's is not on the compiler's default path), and reaches no mpi.h.
+  ASSERT_EQ(std::system((std::string(PDQ_CXX) + " -std=c++20 -M -I'" + prefix + "/include/pdq' '" +
+                         src + "/morse.cpp' > '" + dir + "/deps.log' 2>&1")
+                            .c_str()),
+            0)
+      << readFile(dir + "/deps.log");
+  EXPECT_THAT(readFile(dir + "/deps.log"), HasSubstr("engine/model.hpp"));
+  EXPECT_THAT(readFile(dir + "/deps.log"), Not(HasSubstr("mpi.h")));
   ASSERT_EQ(std::system(("cmake -S '" + src + "' -B '" + build + "' -DCMAKE_BUILD_TYPE=Release " +
-                         "-DCMAKE_PREFIX_PATH='" + prefix + "' > '" + dir + "/configure.log' 2>&1")
+                         "-DCMAKE_EXPORT_COMPILE_COMMANDS=ON -DCMAKE_PREFIX_PATH='" + prefix +
+                         "' > '" + dir + "/configure.log' 2>&1")
                             .c_str()),
             0)
       << readFile(dir + "/configure.log");
   ASSERT_EQ(
       std::system(("cmake --build '" + build + "' -j2 > '" + dir + "/build.log' 2>&1").c_str()), 0)
       << readFile(dir + "/build.log");
+  // find_package(pdq) hands the plugin no MPI include directory.
+  const std::string commands = readFile(build + "/compile_commands.json");
+  EXPECT_THAT(commands, HasSubstr("morse.cpp"));
+  EXPECT_THAT(commands, Not(HasSubstr(PDQ_MPI_INCLUDE_DIR)));
   const std::string lib = build + "/libmorse.so";
   ASSERT_TRUE(fs::exists(lib));
   fs::copy(src + "/cluster.toml", dir + "/cluster.toml");

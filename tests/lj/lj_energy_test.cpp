@@ -35,7 +35,7 @@ Drift run(const Melt& m, long every, Comm& comm) {
 }
 
 TEST(LjMelt, EnergyShiftedKeepsTotalEnergyWithin1e3Over1000Steps) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   Melt m;
   m.shift = "energy";
   m.dt = 0.005;
@@ -51,7 +51,7 @@ TEST(LjMelt, EnergyShiftedKeepsTotalEnergyWithin1e3Over1000Steps) {
 }
 
 TEST(LjMelt, ForceShiftedEnergyErrorShrinksFourfoldWhenDtHalves) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   Melt m;
   m.shift = "force";
   const double time = 1.25;

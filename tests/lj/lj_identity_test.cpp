@@ -5,6 +5,7 @@
 // on; runs on disjoint ranks go side by side, and world rank 0 compares every run's final
 // state with the first.
 #include <gtest/gtest.h>
+#include <mpi.h>
 #include <omp.h>
 
 #include <cstring>

@@ -51,7 +51,7 @@ double maxForce(Simulation& sim) {
 class LjLattice : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LjLattice, PotentialEnergyPerAtomIsTheDirectLatticeSum) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   Melt m;
   m.temperature = 0;
   m.shift = GetParam();
@@ -83,7 +83,7 @@ TEST(DirectLatticeSum, MatchesTheFccLatticeConstants) {
 }
 
 TEST_P(LjLattice, EpsilonAndSigmaScaleTheLattice) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   Melt m;
   m.temperature = 0;
   m.shift = GetParam();
@@ -104,7 +104,7 @@ INSTANTIATE_TEST_SUITE_P(Shifts, LjLattice, ::testing::Values("none", "energy", 
 class LjForce : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LjForce, IsMinusTheGradientOfThePotentialEnergy) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   Melt m;
   m.shift = GetParam();
   m.steps = 30;  // leave the lattice: forces are then large and irregular

@@ -33,7 +33,7 @@ std::map<Gid, int> owners(Simulation& sim) {
 }
 
 TEST(LjMigration, NoParticleIsLostOrDuplicatedOver10000Steps) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   ljtest::Melt m;
   m.cells = 10;  // 4000 atoms
   m.steps = 10000;

@@ -38,7 +38,7 @@ TEST(Cantilever, TipDeflectionMatchesBeamTheory) {
   // Critical viscous damping of the first mode, ω₁ = 3.516 √(EI / (ρ A L⁴)).
   const double omega1 = 3.516 * std::sqrt(E * I / (rho * A * std::pow(length, 4)));
 
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   auto run = [&](long steps) {
     return test::simulation(comm,
                             test::params({{"thickness", std::to_string(t)},

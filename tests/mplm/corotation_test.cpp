@@ -29,7 +29,7 @@ std::pair<double, double> internalAfterRotation(const std::string& kinematics, d
     ps.alterRow(k)[THETA] = angle;
   }
   // Elastic interactions: the small form's spurious strains would otherwise break them all.
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   auto sim = test::simulation(comm, test::params({{"kinematics", kinematics}, {"damage", "false"}}),
                               std::move(ps), 1);
   sim->model().force(sim->context());

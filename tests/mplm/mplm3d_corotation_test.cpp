@@ -39,7 +39,7 @@ std::pair<double, double> internalAfterRotation(const std::string& kinematics, V
     a[RY] = th[1];
     a[RZ] = th[2];
   }
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   auto sim = mplm::test::simulation(
       comm, mplm::test::params({{"kinematics", kinematics}, {"damage", "false"}}), std::move(ps), 1,
       "mplm3d");

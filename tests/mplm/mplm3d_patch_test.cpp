@@ -24,7 +24,7 @@ using Tensor = std::array<std::array<double, 3>, 3>;
 // of an L-cube under the displacement gradient `grad` imposed on every particle.
 std::array<double, 6> interiorStress(const ClosePacked& lattice, const Tensor& grad,
                                      const std::string& kinematics) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   ParticleSet ps = newParticleSet();
   addConcrete(ps, closePackedBox(lattice, {L, L, L}));
   for (std::size_t k = 0; k < ps.size(); ++k)

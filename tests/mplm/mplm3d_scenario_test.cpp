@@ -27,7 +27,7 @@ Scenario scenarioFrom(const std::string& path, const std::string& text) {
 std::string errorOf(const std::string& path, const std::string& text) {
   try {
     Scenario sc = scenarioFrom(path, text);
-    Comm comm(MPI_COMM_WORLD);
+    Comm comm;
     Simulation sim(std::move(sc.problem.model), std::move(sc.problem.particles), sc.problem.run,
                    comm);
     sim.setup();

@@ -24,7 +24,7 @@ struct Stress {
 // (exx, eyy, exy) imposed on every particle.
 Stress interiorStress(const std::string& form, const std::string& orientation, double exx,
                       double eyy, double exy) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   ParticleSet ps = newParticleSet();
   addConcrete(ps, prep::hexagonalRectangle(L, L, s, prep::hexOrientation(orientation)));
   for (std::size_t k = 0; k < ps.size(); ++k) {

@@ -36,7 +36,7 @@ TEST(MplmScenarios, SpacingMustMatchTheLattice) {
   Scenario sc = scenarioFrom("mplm_spacing/bad.toml",
                              "steps = 1\n[model]\nname = \"mplm2d\"\n[particles]\n"
                              "generator = \"square\"\nnx = 5\nny = 5\nspacing = 0.01\n");
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   auto sim = simulation(sc, comm);
   try {
     sim->setup();
@@ -88,7 +88,7 @@ attribute = "monitor"
 value = 1
 y = [0.19, 0.2]
 )");
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   auto simPtr = simulation(sc, comm);
   Simulation& sim = *simPtr;
   sim.run();
@@ -144,7 +144,7 @@ y = [-0.001, 0.001]
     double total = 0;
     const ParticleSet& ps = sc.problem.particles;
     for (std::size_t k = 0; k < ps.size(); ++k) total += ps.fixedRow(k)[LOAD_Y];
-    Comm comm(MPI_COMM_WORLD);
+    Comm comm;
     auto simPtr = simulation(sc, comm);
     Simulation& sim = *simPtr;
     sim.run();

@@ -11,7 +11,7 @@ namespace pdq::mplm {
 namespace {
 
 TEST(Tension, PlateFailsAtTensileStrength) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   const Scenario sc = test::example("tension_x");
   const strength::Case c = strengthCase(sc);
   strength::Options opt;

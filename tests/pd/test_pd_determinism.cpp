@@ -3,6 +3,7 @@
 // sub-communicators, each runs the problem, and world rank 0 (rank 0 of every group)
 // compares the gathered states with the one-rank, one-thread run.
 #include <gtest/gtest.h>
+#include <mpi.h>
 #include <omp.h>
 #include <unistd.h>
 

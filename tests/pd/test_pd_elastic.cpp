@@ -32,7 +32,7 @@ Problem plate(const Material& mat, int nx, int ny, double dt, double damping = 0
 }
 
 void uniaxialStrain(const Material& mat) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   const int n = 31;
   const double eps = 1e-4;
   Problem pb = plate(mat, n, n, 0.1);
@@ -66,7 +66,7 @@ TEST(PdElastic, UniaxialStrainModulusLps) { uniaxialStrain(kLps); }
 
 // Centroid of the right-running half of a Gaussian pulse of u_x, at two times.
 void pWave(const Material& mat) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   const int nx = 360, ny = 12;
   const double dt = 0.25, x0 = 120, width = 15, amp = 1e-3;
   Problem pb = plate(mat, nx, ny, dt);
@@ -110,7 +110,7 @@ TEST(PdElastic, PWaveSpeedLps) { pWave(kLps); }
 // towards rest. The beam is the material of the free particles' cells: from the face
 // of the support layer (X = δ - s/2) to the free end's face, depth n s, thickness 1.
 void cantilever(const Material& mat) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   const int nx = 64, ny = 11;
   const double F = 1e-4, dt = 0.5;
   const double L = (nx - 1 + 0.5) - 2.5, h = ny, E = 1.0, G = E / (2 * (1 + mat.nu));

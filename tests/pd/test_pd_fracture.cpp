@@ -13,7 +13,7 @@ namespace pdq::pdtest {
 namespace {
 
 void notchedPlate(const std::string& model) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   const int n = 40;
   const double lineY = 19.5, tipX = 12.5, delta = 3.0, speed = 2e-4;
   std::vector<std::pair<std::string, double>> kv{

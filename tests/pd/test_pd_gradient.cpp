@@ -13,7 +13,7 @@ namespace {
 
 void checkGradient(const std::string& model, bool threeD, bool correction = false,
                    bool constantInfluence = false) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   const int n = threeD ? 6 : 9;
   std::vector<std::pair<std::string, double>> kv{
       {"E", 2.0}, {"horizon", 2.2}, {"density", 3.0}, {"dt", 0.01}, {"lattice_spacing", 1.0}};

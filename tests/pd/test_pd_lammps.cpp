@@ -16,7 +16,7 @@ namespace pdq::pdtest {
 namespace {
 
 void sideBySide(const std::string& model, double topLoad = 0) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   lammps::Block bl;
   bl.n = 10;
   if (topLoad != 0) {

@@ -30,7 +30,7 @@ std::string pvpython(const std::string& args, const std::string& outFile) {
 }
 
 TEST(Vtu, ParaViewReadsParticlesAndBonds) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   const std::string dir = "vtu_np" + std::to_string(comm.size());
   if (comm.root()) std::filesystem::remove_all(dir);
   comm.barrier();
@@ -84,7 +84,7 @@ TEST(Vtu, ParaViewReadsParticlesAndBonds) {
 // A restarted run (first step 8) continues the earlier run's series: the entries before
 // its first step are kept, the rest replaced, none doubled.
 TEST(Vtu, RestartContinuesTheSeries) {
-  Comm comm(MPI_COMM_WORLD);
+  Comm comm;
   const std::string dir = "vtu_restart_np" + std::to_string(comm.size());
   if (comm.root()) std::filesystem::remove_all(dir);
   comm.barrier();
