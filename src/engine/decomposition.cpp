@@ -1,5 +1,6 @@
 #include "engine/decomposition.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -10,6 +11,11 @@ namespace pdq {
 
 static int firstCell(int c, int nCells, int nProcs) {
   return static_cast<int>((static_cast<long>(c) * nCells) / nProcs);
+}
+
+// Cells along an active axis of length L: as many as fit, each at least minCellSize.
+static int cellsAlong(double L, double minCellSize) {
+  return std::max(1, static_cast<int>(std::floor(L / minCellSize)));
 }
 
 Decomposition::Decomposition(const Domain& domain, double minCellSize, std::array<int, 3> nP,
@@ -23,7 +29,7 @@ Decomposition::Decomposition(const Domain& domain, double minCellSize, std::arra
     } else {
       if (!(L > 0))
         throw InputError(source, 0, "domain has no extent along axis " + std::to_string(a));
-      nGC_[a] = std::max(1, static_cast<int>(std::floor(L / minCellSize)));
+      nGC_[a] = cellsAlong(L, minCellSize);
       if (dom_.periodic[a] && nGC_[a] < 3) {
         std::ostringstream os;
         os << "periodic axis "
@@ -92,6 +98,15 @@ Decomposition::Decomposition(const Domain& domain, double minCellSize, std::arra
 double Decomposition::minActiveCellSize() const {
   double m = std::numeric_limits<double>::infinity();
   for (int a = 0; a < dim(); ++a) m = std::min(m, cell_[a]);
+  return m;
+}
+
+double Decomposition::minActiveCellSize(const Domain& domain, double minCellSize) {
+  double m = std::numeric_limits<double>::infinity();
+  for (int a = 0; a < domain.dim; ++a) {
+    const double L = domain.length(a);
+    m = std::min(m, L / cellsAlong(L, minCellSize));
+  }
   return m;
 }
 

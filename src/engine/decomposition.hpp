@@ -29,6 +29,8 @@ class Decomposition {
   int globalCells(int a) const { return nGC_[a]; }
   double cellSize(int a) const { return cell_[a]; }
   double minActiveCellSize() const;
+  // The smallest cell edge a decomposition of `domain` with this minimum cell size has.
+  static double minActiveCellSize(const Domain& domain, double minCellSize);
   int procs(int a) const { return nP_[a]; }
   int coord(int a) const { return me_[a]; }
   int coreLo(int a) const { return lo_[a]; }  // first global cell of the core

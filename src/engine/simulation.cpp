@@ -83,7 +83,14 @@ void Simulation::setup() {
   }
   dec_ = std::make_unique<Decomposition>(makeDomain(), minCell, cfg_.procs, comm_.size(),
                                          comm_.rank(), cfg_.source);
-  slack_ = (dec_->minActiveCellSize() - horizon) / 2;
+  // Shuffle once some particle may have left the slack of its cells. A model that asks for
+  // a skin (cells wider than its horizon) gets the slack of the cells it asks for even in
+  // wider ones: shuffles wrap periodic positions, which changes the bits of later pair
+  // differences, so their rhythm must not depend on a larger minimum cell size.
+  const double own = model_->minCellSize(), cell = dec_->minActiveCellSize();
+  const double slackCell =
+      own > horizon ? std::min(cell, Decomposition::minActiveCellSize(dec_->domain(), own)) : cell;
+  slack_ = (slackCell - horizon) / 2;
   cube_ = std::make_unique<ProcCube>(*dec_, comm_, particles_, bonds_, model_->shuffles());
   cube_->distribute(initial_.gid, initial_.fixed, initial_.alter);
   initial_ = ParticleSet{};  // the global tables are no longer needed
