@@ -25,8 +25,9 @@
 #include "engine/atomic_file.hpp"
 #include "engine/comm.hpp"
 #include "engine/error.hpp"
-#include "engine/model.hpp"
+#include "engine/problem.hpp"
 #include "engine/simulation.hpp"
+#include "io/standard_outputs.hpp"
 #include "io/thesis_input.hpp"
 #include "lammps_peer.hpp"
 #include "models/peri/peri_model.hpp"
@@ -78,10 +79,13 @@ int cantilever(int argc, char** argv, Comm& comm) {
   Problem pb = readThesisInput(dir);
   if (argc >= 7) pb.run.procs = {std::stoi(argv[5]), std::stoi(argv[6]), 1};
   pb.run.outDir = dir + "/out";
+  pb.output = OutputSettings{};  // the steps alone are timed
+  pb.output.finalRestart = false;
   const std::size_t nParticles = pb.particles.size();
   Gid monitored = 0;
   for (Gid g : pb.particles.gid) monitored = std::max(monitored, g);
-  Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
+  const auto simulation = makeSimulation(std::move(pb), comm);
+  Simulation& sim = *simulation;
   const double t = timedRun(sim, comm);
   const double y = attributeOf(sim, monitored, 1);
   const long bonds = comm.sum(static_cast<long>(sim.bonds().count()));
@@ -107,17 +111,14 @@ int block(int argc, char** argv, Comm& comm) {
   const long steps = std::stol(argv[4]);
   const std::string dir = argc >= 6 ? argv[5] : "";
   if (argc >= 7) bl.dt = std::stod(argv[6]);
-  Params p = lammps::blockParams(bl, model);
-  auto m = ModelRegistry::create(model);
-  m->configure(p);
-  p.checkAllUsed();
-  ParticleSet ps = lammps::blockParticles(bl, m->schema());
-  if (!dir.empty() && comm.root()) lammps::writeLammps(bl, model, steps, dir, ps);
-  RunConfig cfg;
-  cfg.steps = steps;
-  cfg.outDir = dir.empty() ? "pd_block_out" : dir + "/pdq_out";
-  const std::size_t nParticles = ps.size();
-  Simulation sim(std::move(m), std::move(ps), cfg, comm);
+  Problem pb = makeProblem(model, lammps::blockParams(bl, model), {});
+  pb.particles = lammps::blockParticles(bl, pb.model->schema());
+  if (!dir.empty() && comm.root()) lammps::writeLammps(bl, model, steps, dir, pb.particles);
+  pb.run.steps = steps;
+  pb.run.outDir = dir.empty() ? "pd_block_out" : dir + "/pdq_out";
+  const std::size_t nParticles = pb.particles.size();
+  const auto simulation = makeSimulation(std::move(pb), comm);
+  Simulation& sim = *simulation;
   const double t = timedRun(sim, comm);
   const long bonds = comm.sum(static_cast<long>(sim.bonds().count()));
   if (comm.root())

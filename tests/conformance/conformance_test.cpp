@@ -189,6 +189,7 @@ Problem problemFor(const std::string& name, const Declared& d, const std::string
   }
   pb.run.outDir = dir;
   pb.output = OutputSettings{};
+  pb.output.finalRestart = false;
   return pb;
 }
 
@@ -205,7 +206,8 @@ void checkGradient(const std::string& name, const Declared& d) {
   Comm comm;
   Problem pb = problemFor(name, d, "conformance_" + name + "_gradient");
   const std::vector<Gid> ids = pb.particles.gid;
-  Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
+  const auto simulation = makeSimulation(std::move(pb), comm);
+  Simulation& sim = *simulation;
   sim.setup();
   Model& model = sim.model();
   Context& ctx = sim.context();
@@ -300,10 +302,9 @@ test::State runOn(const std::string& name, const Declared& d, int ranks, int thr
   test::State s;
   if (c != MPI_COMM_NULL) {
     Comm comm(c);
-    Problem pb = problemFor(name, d, dir);
-    Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
-    sim.run();
-    s = test::gatherState(sim);
+    const auto sim = makeSimulation(problemFor(name, d, dir), comm);
+    sim->run();
+    s = test::gatherState(*sim);
   }
   if (c != MPI_COMM_NULL) MPI_Comm_free(&c);
   return test::toWorldRoot(s, 0);
@@ -342,19 +343,17 @@ void checkRestart(const std::string& name, const Declared& d) {
   {
     Problem pb = problemFor(name, d, dir);
     pb.output.restartEvery = at;
-    Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
-    addStandardOutputs(sim, pb.output);
-    sim.run();
-    full = test::gatherState(sim);
+    const auto sim = makeSimulation(std::move(pb), comm);
+    sim->run();
+    full = test::gatherState(*sim);
   }
   {
     Problem pb = problemFor(name, d, dir + "_again");
-    RestartState saved = readRestart(restartPath(dir, at), pb);
+    pb.restart = readRestart(restartPath(dir, at), pb);
     EXPECT_EQ(pb.run.firstStep, at);
-    Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
-    sim.restore(std::move(saved));
-    sim.run();
-    resumed = test::gatherState(sim);
+    const auto sim = makeSimulation(std::move(pb), comm);
+    sim->run();
+    resumed = test::gatherState(*sim);
   }
   if (worldRank() == 0) {
     ASSERT_FALSE(full.particles.empty());
@@ -375,8 +374,9 @@ void expectDistinct(const std::string& what, const std::vector<std::string>& nam
 // every field and global evaluated by name.
 void checkNames(const std::string& name, const Declared& d) {
   Comm comm;
-  Problem pb = problemFor(name, d, "conformance_" + name + "_names");
-  Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
+  const auto simulation =
+      makeSimulation(problemFor(name, d, "conformance_" + name + "_names"), comm);
+  Simulation& sim = *simulation;
   sim.setup();
   Model& model = sim.model();
   const Schema s = model.schema();

@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "engine/error.hpp"
-#include "engine/simulation.hpp"
+#include "io/standard_outputs.hpp"
 #include "models/mplm/3d/attributes.hpp"
 #include "scenario/scenario.hpp"
 
@@ -28,9 +28,7 @@ std::string errorOf(const std::string& path, const std::string& text) {
   try {
     Scenario sc = scenarioFrom(path, text);
     Comm comm;
-    Simulation sim(std::move(sc.problem.model), std::move(sc.problem.particles), sc.problem.run,
-                   comm);
-    sim.setup();
+    makeSimulation(std::move(sc.problem), comm)->setup();
   } catch (const InputError& e) {
     return e.what();
   }

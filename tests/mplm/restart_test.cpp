@@ -43,13 +43,11 @@ restart_every = 100
   return pb;
 }
 
-test::State run(Problem pb, RestartState* restart = nullptr) {
+test::State run(Problem pb) {
   Comm comm;
-  Simulation sim(std::move(pb.model), std::move(pb.particles), pb.run, comm);
-  if (restart) sim.restore(*restart);
-  addStandardOutputs(sim, pb.output);
-  sim.run();
-  return test::gatherState(sim);
+  const auto sim = makeSimulation(std::move(pb), comm);
+  sim->run();
+  return test::gatherState(*sim);
 }
 
 class MplmRestart : public ::testing::Test {
@@ -68,7 +66,8 @@ class MplmRestart : public ::testing::Test {
   // Restarts from `from`'s restart file at `step` and runs to step 400.
   static void resume(const std::string& from, long step) {
     Problem again = plate("mplm_restart_again", 400);
-    RestartState st = readRestart(restartPath(from, step), again);
+    again.restart = readRestart(restartPath(from, step), again);
+    const RestartState& st = *again.restart;
     EXPECT_EQ(again.run.firstStep, step);
     EXPECT_TRUE(st.hasState);
     // The hold-phase damping is computed once the loads are held (from step 201 on).
@@ -79,7 +78,7 @@ class MplmRestart : public ::testing::Test {
     } else {
       EXPECT_LT(hold, 0);
     }
-    const test::State resumed = run(std::move(again), &st);
+    const test::State resumed = run(std::move(again));
     int rank = 0;
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     if (rank == 0) {
