@@ -27,6 +27,10 @@ class Output {
   virtual bool atEnd() const { return false; }
   // True for outputs a run can restart from (the engine shuffles before writing them).
   virtual bool capturesState() const { return false; }
+  // Called once on every rank before the first write, at the run's first step; `resumed`:
+  // the run continues from a restart file, so files that grow during a run are continued
+  // rather than started anew.
+  virtual void begin(OutputContext&, bool /*resumed*/) {}
   virtual void write(OutputContext& out) = 0;
   // Called once after the last step (rename temporary files into place, etc.).
   virtual void finish(OutputContext&) {}

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -103,6 +104,7 @@ void Simulation::setup() {
   ctx_->setStep(step_);
   ctx_->setSteps(cfg_.steps);
   model_->setup(*ctx_);
+  resumed_ = restart_.has_value();
   if (restart_) {
     // A restart brings its bonds: the saved list replaces what setup built from the
     // (possibly moved) particles, so nothing is lost or added on the way.
@@ -153,6 +155,24 @@ void Simulation::setup() {
          << " ghosts, " << bonds_.count() << " bonds\n";
   std::filesystem::create_directories(cfg_.outDir);
   setUp_ = true;
+  if (!outputs_.empty()) {
+    // Files that grow during the run: a resumed run continues them.
+    if (comm_.root()) {
+      const std::string timing = cfg_.outDir + "/timing.out";
+      if (resumed_ && std::filesystem::exists(timing)) {
+        std::ifstream in(timing, std::ios::binary);
+        std::stringstream ss;
+        ss << in.rdbuf();
+        timingBefore_ = ss.str() + "\n";
+      }
+      const std::string debug = cfg_.outDir + "/debug.txt";
+      if (!resumed_) writeFileAtomically(debug, "");
+      debugFile_.open(debug);
+      if (resumed_) debugFile_.write("# restarted at step " + std::to_string(step_) + "\n");
+    }
+    OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
+    for (auto& o : outputs_) o->begin(oc, resumed_);
+  }
   writeOutputs(false);
 }
 
@@ -232,8 +252,14 @@ void Simulation::checkFinite() {
 void Simulation::writeOutputs(bool last) {
   Timers::Scope t(timers_, Phase::Output);
   OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
+  bool saved = false;
   for (auto& o : outputs_)
-    if (o->due(step_) || (last && o->atEnd())) o->write(oc);
+    if (o->due(step_) || (last && o->atEnd())) {
+      o->write(oc);
+      saved |= o->capturesState();
+    }
+  // debug.txt and timing.out are brought up to date with each restart state.
+  if (saved) writeLogs();
 }
 
 void Simulation::finish() {
@@ -243,13 +269,13 @@ void Simulation::finish() {
     OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
     for (auto& o : outputs_) o->finish(oc);
   }
-  writeTiming();
+  writeLogs();
 }
 
-void Simulation::writeTiming() {
+void Simulation::writeLogs() {
   std::ostringstream os;
   os << "# pdq timing: wall-clock seconds per phase over " << comm_.size() << " rank(s), "
-     << step_ - cfg_.firstStep << " steps\n";
+     << step_ - cfg_.firstStep << " steps (" << cfg_.firstStep << " to " << step_ << ")\n";
   os << std::left << std::setw(16) << "# phase" << std::right << std::setw(14) << "min"
      << std::setw(14) << "mean" << std::setw(14) << "max\n";
   double total = 0;
@@ -271,14 +297,19 @@ void Simulation::writeTiming() {
   if (stats_.shuffles)
     os << "# shuffles: " << stats_.shuffles << ", at most " << stats_.maxShuffleMessages
        << " messages each on rank 0\n";
-  // debug.txt: every rank's own lines, in rank order.
-  const std::string text = debug_.str();
+  // debug.txt: every rank's lines since the last write, in rank order.
+  const std::string text = debug_.str().substr(debugWritten_);
+  debugWritten_ += text.size();
   auto blocks = comm_.gather(std::vector<char>(text.begin(), text.end()));
   if (comm_.root()) {
-    writeFileAtomically(cfg_.outDir + "/timing.out", os.str());
+    writeFileAtomically(cfg_.outDir + "/timing.out", timingBefore_ + os.str());
     std::string dbg;
     for (auto& b : blocks) dbg.append(b.begin(), b.end());
-    writeFileAtomically(cfg_.outDir + "/debug.txt", dbg);
+    if (!debugFile_.isOpen()) {
+      writeFileAtomically(cfg_.outDir + "/debug.txt", "");
+      debugFile_.open(cfg_.outDir + "/debug.txt");
+    }
+    if (!dbg.empty()) debugFile_.write(dbg);
   }
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/atomic_file.hpp"
 #include "engine/bonds.hpp"
 #include "engine/comm.hpp"
 #include "engine/context.hpp"
@@ -83,7 +84,7 @@ class Simulation {
   Domain makeDomain() const;
   void writeOutputs(bool last);
   void checkFinite();
-  void writeTiming();
+  void writeLogs();  // debug.txt (appended) and timing.out (rewritten); collective
 
   std::unique_ptr<Model> model_;
   ParticleSet initial_;
@@ -94,6 +95,9 @@ class Simulation {
   std::unique_ptr<Decomposition> dec_;
   std::unique_ptr<ProcCube> cube_;
   std::ostringstream debug_;
+  std::size_t debugWritten_ = 0;  // characters of debug_ already in debug.txt
+  AppendFile debugFile_;          // rank 0
+  std::string timingBefore_;      // timing.out of the runs this one continues
   std::unique_ptr<Context> ctx_;
   std::vector<std::unique_ptr<Output>> outputs_;
   std::optional<RestartState> restart_;
@@ -102,7 +106,7 @@ class Simulation {
   StepStats stats_;
   long step_ = 0;
   double slack_ = 0;
-  bool setUp_ = false, ended_ = false;
+  bool setUp_ = false, ended_ = false, resumed_ = false;
 };
 
 }  // namespace pdq

@@ -16,12 +16,13 @@ std::unique_ptr<Simulation> makeSimulation(Problem pb, Comm& comm) {
 }
 
 void addStandardOutputs(Simulation& sim, const OutputSettings& o) {
-  if (o.restartEvery > 0 || o.finalRestart)
-    sim.addOutput(std::make_unique<RestartOutput>(o.restartEvery, o.finalRestart));
+  // Histories first: when a restart file exists, so do the rows of its step.
   if (o.historyEvery > 0 && !o.historyIds.empty())
     sim.addOutput(std::make_unique<TimeHistoryOutput>(o.historyEvery, o.historyIds));
   if (o.globalsEvery > 0 && !sim.model().globals().empty())
     sim.addOutput(std::make_unique<GlobalsOutput>(o.globalsEvery));
+  if (o.restartEvery > 0 || o.finalRestart)
+    sim.addOutput(std::make_unique<RestartOutput>(o.restartEvery, o.finalRestart));
   if (o.paraview) sim.addOutput(std::make_unique<VtuOutput>(vtuOptions(*o.paraview)));
   if (o.picture)
     sim.addOutput(std::make_unique<post::PictureOutput>(post::pictureOptions(*o.picture)));

@@ -47,7 +47,7 @@ std::string sourceDir() {
   return s ? s : PDQ_SOURCE_DIR_DEFAULT;
 }
 
-Run runPdq(const std::vector<std::string>& args, const std::string& cwd, int ranks) {
+Started startPdq(const std::vector<std::string>& args, const std::string& cwd, int ranks) {
   const char* exe = std::getenv("PDQ_EXE");
   std::string cmd;
   if (!cwd.empty()) cmd += "cd " + quote(cwd) + " && ";
@@ -64,12 +64,14 @@ Run runPdq(const std::vector<std::string>& args, const std::string& cwd, int ran
   static int serial = 0;
   const std::string base = fs::temp_directory_path().string() + "/pdq_cli_" +
                            std::to_string(getpid()) + "_" + std::to_string(serial++);
-  const std::string outPath = base + ".out", errPath = base + ".err";
+  Started s;
+  s.outPath = base + ".out";
+  s.errPath = base + ".err";
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 1, outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+  posix_spawn_file_actions_addopen(&actions, 1, s.outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
                                    0644);
-  posix_spawn_file_actions_addopen(&actions, 2, errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+  posix_spawn_file_actions_addopen(&actions, 2, s.errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
                                    0644);
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
   std::vector<std::string> env = cleanEnvironment();
@@ -79,18 +81,27 @@ Run runPdq(const std::vector<std::string>& args, const std::string& cwd, int ran
   std::string sh = "/bin/sh", dashC = "-c";
   char* argv[] = {sh.data(), dashC.data(), cmd.data(), nullptr};
   pid_t pid = 0;
+  if (posix_spawn(&pid, "/bin/sh", &actions, nullptr, argv, envp.data()) == 0) s.pid = pid;
+  posix_spawn_file_actions_destroy(&actions);
+  return s;
+}
+
+Run waitPdq(const Started& s) {
   Run r;
-  if (posix_spawn(&pid, "/bin/sh", &actions, nullptr, argv, envp.data()) == 0) {
+  if (s.pid > 0) {
     int status = 0;
-    waitpid(pid, &status, 0);
+    waitpid(s.pid, &status, 0);
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
   }
-  posix_spawn_file_actions_destroy(&actions);
-  r.out = readFile(outPath);
-  r.err = readFile(errPath);
-  fs::remove(outPath);
-  fs::remove(errPath);
+  r.out = readFile(s.outPath);
+  r.err = readFile(s.errPath);
+  fs::remove(s.outPath);
+  fs::remove(s.errPath);
   return r;
+}
+
+Run runPdq(const std::vector<std::string>& args, const std::string& cwd, int ranks) {
+  return waitPdq(startPdq(args, cwd, ranks));
 }
 
 std::string freshDir(const std::string& name) {

@@ -16,6 +16,14 @@ struct Run {
 // `pdq args...` in `cwd` (empty: the current folder); ranks > 0: under mpirun -np ranks.
 Run runPdq(const std::vector<std::string>& args, const std::string& cwd = "", int ranks = 0);
 
+// The same started in the background: `pid` is pdq's (or mpirun's) own process id.
+struct Started {
+  int pid = -1;
+  std::string outPath, errPath;
+};
+Started startPdq(const std::vector<std::string>& args, const std::string& cwd = "", int ranks = 0);
+Run waitPdq(const Started& started);  // waits for it to end
+
 // A new empty folder for one test.
 std::string freshDir(const std::string& name);
 std::string readFile(const std::string& path);

@@ -1,0 +1,158 @@
+// Runs that are killed, stopped by a signal or restarted: what they leave behind and how
+// they continue (docs/reliability.md).
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <thread>
+
+#include "pdq_process.hpp"
+#include "spring_case.hpp"
+
+namespace fs = std::filesystem;
+using namespace pdq::test;
+using testing::HasSubstr;
+
+namespace {
+
+// Replaces every `from` in the file by `to`.
+void edit(const std::string& path, const std::string& from, const std::string& to) {
+  std::string text = readFile(path);
+  ASSERT_NE(text.find(from), std::string::npos) << from << " not in " << path;
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  writeFile(path, text);
+}
+
+// The breaking spring lattice for `steps` steps, with rows every 50 steps and restart
+// files every 500 (long enough a run to be killed in the middle).
+std::string longCase(const std::string& dir, long steps) {
+  const std::string sc = springCase(dir, steps);
+  edit(sc, "restart_every = 10", "restart_every = 500");
+  edit(sc, "globals_every = 5", "globals_every = 50");
+  edit(sc, "history_every = 5", "history_every = 50");
+  return sc;
+}
+
+// The newest step of ParticleAlterAttrs.<step>.rst in `dir`, -1 if none.
+long newestRestart(const std::string& dir) {
+  long newest = -1;
+  const std::regex name(R"(ParticleAlterAttrs\.(\d+)\.rst)");
+  std::error_code ec;  // the run renames files as we look
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string f = it->path().filename().string();
+    std::smatch m;
+    if (std::regex_match(f, m, name)) newest = std::max(newest, std::stol(m[1]));
+  }
+  return newest;
+}
+
+// Steps of the rows of a history file (the number before the first ',' or ' ').
+std::vector<long> rowSteps(const std::string& text) {
+  std::vector<long> steps;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) steps.push_back(std::stol(line));
+  return steps;
+}
+
+long lastRowStep(const std::string& path) {
+  const auto s = rowSteps(readFile(path));
+  return s.empty() ? -1 : s.back();
+}
+
+// The process ids of a process's children (the ranks under mpirun).
+std::vector<int> children(int pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/task/" + std::to_string(pid) + "/children");
+  std::vector<int> out;
+  for (int c; in >> c;) out.push_back(c);
+  return out;
+}
+
+// Waits until `ready()` or `seconds` pass; false on time-out.
+template <class F>
+bool waitFor(F&& ready, double seconds) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < end) {
+    if (ready()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return false;
+}
+
+// Kills a run (one rank killed with SIGKILL; under mpirun the job then ends) once it has
+// written a restart file at step >= `after`, and checks that its histories hold every
+// row up to that restart step, each a row of the uninterrupted run; then restarts it in
+// the same folder and checks the histories equal the uninterrupted run's.
+void killAndResume(int ranks, long kSteps) {
+  const std::string dir = freshDir("kill_np" + std::to_string(ranks));
+  const std::string sc = longCase(dir, kSteps);
+  auto whole = runPdq({"run", sc, "-q", "--out", "whole"}, dir, ranks);
+  ASSERT_EQ(whole.code, 0) << whole.all();
+  const std::string wholeHist = readFile(dir + "/whole/history.csv");
+  const std::string wholeTime = readFile(dir + "/whole/timehist.dat");
+  ASSERT_EQ(rowSteps(wholeHist).size(), static_cast<std::size_t>(kSteps / 50 + 1));
+
+  const Started run = startPdq({"run", sc, "-q"}, dir, ranks);
+  const std::string out = dir + "/out";
+  ASSERT_TRUE(waitFor([&] { return newestRestart(out) >= kSteps / 4; }, 120)) << "no restart";
+  const int victim = ranks > 0 ? children(run.pid).back() : run.pid;
+  ASSERT_EQ(kill(victim, SIGKILL), 0);
+  const Run killed = waitPdq(run);
+  EXPECT_NE(killed.code, 0) << killed.all();
+  const long at = newestRestart(out);
+  ASSERT_LT(at, kSteps) << "the run ended before it was killed";
+  // Every row up to the newest restart file is there, whole and as in the full run.
+  const std::string hist = readFile(out + "/history.csv");
+  const std::string time = readFile(out + "/timehist.dat");
+  EXPECT_GE(lastRowStep(out + "/history.csv"), at);
+  EXPECT_GE(lastRowStep(out + "/timehist.dat"), at);
+  EXPECT_EQ(wholeHist.substr(0, hist.size()), hist);
+  EXPECT_EQ(wholeTime.substr(0, time.size()), time);
+  // debug.txt and timing.out are as of a restart file (the kill may come between the
+  // newest one and them).
+  EXPECT_THAT(readFile(out + "/debug.txt"), HasSubstr("owned"));
+  EXPECT_THAT(readFile(out + "/timing.out"), HasSubstr("(0 to "));
+
+  const auto resumed = runPdq(
+      {"run", sc, "-q", "--restart", "out/ParticleAlterAttrs." + std::to_string(at) + ".rst"}, dir,
+      ranks);
+  ASSERT_EQ(resumed.code, 0) << resumed.all();
+  EXPECT_EQ(readFile(out + "/history.csv"), wholeHist);
+  EXPECT_EQ(readFile(out + "/timehist.dat"), wholeTime);
+  const std::string last = "/ParticleAlterAttrs." + std::to_string(kSteps) + ".rst";
+  EXPECT_EQ(readFile(out + last), readFile(dir + "/whole" + last));
+  // timing.out keeps the killed run's table and adds the restarted one's.
+  const std::string timing = readFile(out + "/timing.out");
+  EXPECT_THAT(timing, HasSubstr("(0 to "));
+  EXPECT_THAT(timing, HasSubstr("(" + std::to_string(at) + " to " + std::to_string(kSteps) + ")"));
+  EXPECT_THAT(readFile(out + "/debug.txt"), HasSubstr("restarted at step " + std::to_string(at)));
+}
+
+}  // namespace
+
+TEST(Reliability, KilledRunKeepsItsHistoriesAndRestartContinuesThem) { killAndResume(0, 20000); }
+TEST(Reliability, KilledRankOfTwoKeepsHistoriesAndRestartContinuesThem) { killAndResume(2, 4000); }
+
+TEST(Reliability, RestartDropsRowsAfterItsStep) {
+  // A finished run restarted from an earlier step rewrites the rows after it, once.
+  const std::string dir = freshDir("rerun");
+  const std::string sc = springCase(dir, 40);
+  ASSERT_EQ(runPdq({"run", sc, "-q"}, dir).code, 0);
+  const std::string hist = readFile(dir + "/out/history.csv");
+  const std::string time = readFile(dir + "/out/timehist.dat");
+  const auto r = runPdq({"run", sc, "-q", "--restart", "out/ParticleAlterAttrs.20.rst"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_EQ(readFile(dir + "/out/history.csv"), hist);
+  EXPECT_EQ(readFile(dir + "/out/timehist.dat"), time);
+  // A history of other columns in the folder is not continued.
+  writeFile(dir + "/out/history.csv", "step,time,something_else\n0,0,1\n");
+  const auto other = runPdq({"run", sc, "-q", "--restart", "out/ParticleAlterAttrs.20.rst"}, dir);
+  EXPECT_EQ(other.code, 1) << other.all();
+  EXPECT_THAT(other.err, HasSubstr("history.csv:1: its columns are not this run's"));
+}
