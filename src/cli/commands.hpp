@@ -9,13 +9,15 @@
 namespace pdq::cli {
 
 struct RunOptions {
-  std::string input;    // scenario .toml or a folder of the thesis's .dat files
-  std::string restart;  // ParticleAlterAttrs.<step>.rst to continue from
-  std::string out;      // output folder (overrides the scenario's)
-  long steps = -1;      // last step (overrides the scenario's)
+  std::string input;       // scenario .toml or a folder of the thesis's .dat files
+  std::string restart;     // ParticleAlterAttrs.<step>.rst to continue from
+  std::string out;         // output folder (overrides the scenario's)
+  long steps = -1;         // last step (overrides the scenario's)
+  double maxWallTime = 0;  // seconds; > 0: stop with restart files before this much wall time
   Verbosity verbosity = Verbosity::Normal;
 };
-void runCommand(const RunOptions& o);
+// Returns Ok, or Interrupted when a signal or the wall-time limit stopped the run early.
+int runCommand(const RunOptions& o);
 
 struct InfoOptions {
   std::string input;

@@ -9,9 +9,9 @@
 
 namespace pdq::cli {
 
-void printError(const std::string& message) {
+void printError(const std::string& message, const char* prefix) {
   std::fflush(stdout);
-  std::fprintf(stderr, "pdq: error: %s\n", message.c_str());
+  std::fprintf(stderr, "%s%s\n", prefix, message.c_str());
   std::fflush(stderr);
 }
 

@@ -13,9 +13,10 @@ namespace pdq::cli {
 // Exit codes of the pdq command (docs/tutorial.md).
 enum Exit : int {
   Ok = 0,
-  BadInput = 1,    // an input file or parameter is wrong (the message names file and line)
-  BadCommand = 2,  // the command line is wrong
-  RunFailed = 3,   // the run failed (unstable, out of memory, a file could not be written)
+  BadInput = 1,     // an input file or parameter is wrong (the message names file and line)
+  BadCommand = 2,   // the command line is wrong
+  RunFailed = 3,    // the run failed (unstable, out of memory, a file could not be written)
+  Interrupted = 4,  // stopped early by a signal or --max-wall-time, restart files written
 };
 
 class Guard {
@@ -35,7 +36,7 @@ class Guard {
   int rank_ = 0;
 };
 
-// Prints "pdq: error: message" to stderr.
-void printError(const std::string& message);
+// Prints "pdq: error: message" (or `prefix` in place of "pdq: error: ") to stderr.
+void printError(const std::string& message, const char* prefix = "pdq: error: ");
 
 }  // namespace pdq::cli

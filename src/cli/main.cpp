@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/guard.hpp"
 #include "cli/plugins.hpp"
+#include "cli/stop.hpp"
 #include "engine/comm.hpp"
 #include "engine/error.hpp"
 #include "engine/model.hpp"
@@ -97,6 +98,10 @@ int main(int argc, char** argv) {
   runCmd->add_option("--steps", run.steps, "run to this step instead of the scenario's")
       ->check(CLI::Range(0L, 1000000000000L));
   runCmd->add_option("-o,--out", run.out, "output folder instead of the scenario's");
+  std::string maxWall;
+  runCmd->add_option("--max-wall-time", maxWall,
+                     "stop with restart files before this much wall time (seconds, or e.g. "
+                     "90m, 2h, 1h30m); exit code 4");
   auto* q = runCmd->add_flag("-q,--quiet", quiet, "print only errors");
   runCmd->add_flag("-v,--verbose", verbose, "also print the setup summary and timings")
       ->excludes(q);
@@ -187,12 +192,21 @@ int main(int argc, char** argv) {
     return BadCommand;
   }
   run.verbosity = quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
+  if (!maxWall.empty()) {
+    try {
+      run.maxWallTime = parseWallTime(maxWall);
+    } catch (const std::invalid_argument& e) {
+      if (root) printError(std::string(e.what()) + "; see --help");
+      return BadCommand;
+    }
+  }
   if (prep.out.empty() && !prep.input.empty())
     prep.out = std::filesystem::path(prep.input).stem().string() + "_input";
 
-  return guard.run([&] {
+  int code = Ok;
+  const int failed = guard.run([&] {
     loadPlugins(plugins);
-    if (runCmd->parsed()) runCommand(run);
+    if (runCmd->parsed()) code = runCommand(run);
     if (prepCmd->parsed()) prepCommand(prep);
     if (pictureCmd->parsed()) pictureCommand(picture);
     if (plotCmd->parsed()) plotCommand(plot);
@@ -200,4 +214,5 @@ int main(int argc, char** argv) {
     if (infoCmd->parsed()) infoCommand(info);
     if (listCmd->parsed() && root) list();
   });
+  return failed != Ok ? failed : code;
 }

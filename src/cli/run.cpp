@@ -5,6 +5,8 @@
 #include <cstdlib>
 
 #include "cli/commands.hpp"
+#include "cli/guard.hpp"
+#include "cli/stop.hpp"
 #include "cli/summary.hpp"
 #include "engine/error.hpp"
 #include "io/restart.hpp"
@@ -13,7 +15,7 @@
 
 namespace pdq::cli {
 
-void runCommand(const RunOptions& o) {
+int runCommand(const RunOptions& o) {
   Comm comm;
   Scenario sc = loadScenario(o.input);
   Problem& pb = sc.problem;
@@ -22,8 +24,14 @@ void runCommand(const RunOptions& o) {
   if (!o.restart.empty()) pb.restart = readRestart(o.restart, pb);
   const double particles = static_cast<double>(pb.particles.size());
   const std::string modelName = pb.modelName;
+  // Every run can be stopped early with its state saved, even one that writes no restart
+  // files of its own.
+  const bool ownRestarts = pb.output.restartEvery > 0 || pb.output.finalRestart;
   const auto simulation = makeSimulation(std::move(pb), comm);
   Simulation& sim = *simulation;
+  if (!ownRestarts) sim.addOutput(std::make_unique<RestartOutput>(0, false));
+  StopRequest stopRequest(o.maxWallTime);
+  sim.setStopCheck([&] { return stopRequest.poll(); });
   sim.setup();
   const bool talk = comm.root() && o.verbosity != Verbosity::Quiet;
   const std::string about = summary(sim, modelName, o.input);
@@ -37,6 +45,14 @@ void runCommand(const RunOptions& o) {
   while (sim.advance()) progress.update(sim.step());
   sim.finish();
   progress.finish(sim.step());
+  if (sim.stopCode() > 0) {
+    if (comm.root())
+      printError("stopped at step " + std::to_string(sim.step()) + " by " +
+                     StopRequest::describe(sim.stopCode()) + "; continue with: pdq run " + o.input +
+                     " --restart " + restartPath(sim.config().outDir, sim.step()),
+                 "pdq: ");
+    return Interrupted;
+  }
   if (talk) {
     if (!sim.context().stopReason().empty())
       std::printf("stopped at step %ld: %s\n", sim.step(), sim.context().stopReason().c_str());
@@ -50,6 +66,7 @@ void runCommand(const RunOptions& o) {
       }
     }
   }
+  return Ok;
 }
 
 }  // namespace pdq::cli

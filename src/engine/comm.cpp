@@ -87,6 +87,12 @@ double Comm::max(double v) const {
   return r;
 }
 
+std::vector<double> Comm::max(std::vector<double> v) const {
+  MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_MAX,
+                mpi(comm_));
+  return v;
+}
+
 double Comm::min(double v) const {
   double r;
   MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MIN, mpi(comm_));

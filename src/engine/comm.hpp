@@ -39,6 +39,7 @@ class Comm {
                      int src, int tag);
 
   double max(double v) const;
+  std::vector<double> max(std::vector<double> v) const;  // element by element, one message
   double min(double v) const;
   long sum(long v) const;
   bool any(bool v) const;

@@ -189,15 +189,23 @@ bool Simulation::advance() {
     Timers::Scope t(timers_, Phase::Integrate);
     model_->integrate(*ctx_);
   }
+  // One reduction a step, when anything needs one: a stop asked for from outside, and how
+  // far particles moved since the last shuffle.
+  std::vector<double> probe{stopCheck_ ? static_cast<double>(stopCheck_()) : 0.0,
+                            model_->shuffles() ? cube_->maxDisplacementSinceRebuild() : 0.0};
+  if (stopCheck_ || model_->shuffles()) probe = comm_.max(probe);
+  // The last step ends the run anyway, with its own outputs.
+  stopCode_ = step_ < cfg_.steps ? static_cast<int>(probe[0]) : 0;
+  const bool interrupted = stopCode_ > 0;
   bool shuffleNow = false;
   if (model_->shuffles()) {
     // Shuffle once some particle may have moved far enough to change neighbours, and at
     // steps whose state is saved for a restart, so that a restarted run starts from the
     // same cells (and periodic wraps) as the original and continues bit for bit.
-    bool saving = false;
+    bool saving = interrupted;
     for (const auto& o : outputs_)
       saving |= o->capturesState() && (o->due(step_) || (step_ == cfg_.steps && o->atEnd()));
-    shuffleNow = comm_.max(cube_->maxDisplacementSinceRebuild()) > slack_ || saving;
+    shuffleNow = probe[1] > slack_ || saving;
   }
   if (shuffleNow) {
     Timers::Scope t(timers_, Phase::Shuffle);
@@ -219,7 +227,12 @@ bool Simulation::advance() {
     ended_ = true;
     debug_ << "stopped at step " << step_ << ": " << ctx_->stopReason() << "\n";
   }
-  writeOutputs(stop || step_ == cfg_.steps);
+  if (interrupted) {
+    ended_ = true;
+    debug_ << "stopped early at step " << step_ << " (stop code " << stopCode_
+           << "); restart files written\n";
+  }
+  writeOutputs(stop || step_ == cfg_.steps, interrupted);
   return !ended_ && step_ < cfg_.steps;
 }
 
@@ -249,12 +262,12 @@ void Simulation::checkFinite() {
   }
 }
 
-void Simulation::writeOutputs(bool last) {
+void Simulation::writeOutputs(bool last, bool checkpoint) {
   Timers::Scope t(timers_, Phase::Output);
   OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
   bool saved = false;
   for (auto& o : outputs_)
-    if (o->due(step_) || (last && o->atEnd())) {
+    if (o->due(step_) || (last && o->atEnd()) || (checkpoint && o->capturesState())) {
       o->write(oc);
       saved |= o->capturesState();
     }

@@ -4,6 +4,7 @@
 //     force -> integrate -> exchange (halo) or shuffle -> outputs
 // with timers for every phase and a stop the model may request.
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -62,6 +63,13 @@ class Simulation {
   void addOutput(std::unique_ptr<Output> out);
   void restore(RestartState state) { restart_ = std::move(state); }
 
+  // Asked on every rank once a step: 0 to go on, or a positive code to stop early. The
+  // largest code over the ranks stops every rank after the same step, with the state
+  // written there by the outputs that capture it (restart files) even where they are not
+  // due; stopCode() then holds it. The cli stops this way on signals and a wall-time limit.
+  void setStopCheck(std::function<int()> check) { stopCheck_ = std::move(check); }
+  int stopCode() const { return stopCode_; }
+
   void setup();    // decomposition, distribution, model setup; called by run() if needed
   void run();      // all steps
   bool advance();  // one step; false when the run has ended (steps done or stop requested)
@@ -82,7 +90,7 @@ class Simulation {
 
  private:
   Domain makeDomain() const;
-  void writeOutputs(bool last);
+  void writeOutputs(bool last, bool checkpoint = false);
   void checkFinite();
   void writeLogs();  // debug.txt (appended) and timing.out (rewritten); collective
 
@@ -106,6 +114,8 @@ class Simulation {
   StepStats stats_;
   long step_ = 0;
   double slack_ = 0;
+  std::function<int()> stopCheck_;
+  int stopCode_ = 0;
   bool setUp_ = false, ended_ = false, resumed_ = false;
 };
 

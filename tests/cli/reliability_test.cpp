@@ -156,3 +156,86 @@ TEST(Reliability, RestartDropsRowsAfterItsStep) {
   EXPECT_EQ(other.code, 1) << other.all();
   EXPECT_THAT(other.err, HasSubstr("history.csv:1: its columns are not this run's"));
 }
+
+namespace {
+
+// The step in "stopped at step N by ..." of pdq's message, -1 if none.
+long stoppedAt(const std::string& err) {
+  std::smatch m;
+  return std::regex_search(err, m, std::regex(R"(stopped at step (\d+) by)")) ? std::stol(m[1])
+                                                                              : -1;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Starts a long run, sends `sig` once it is stepping (to one rank under mpirun, or to
+// mpirun itself), and checks that pdq stops within 5 s with exit code 4, restart files
+// at the step it names and its histories up to there. With `resume`, the run restarted
+// from them ends with the bits (and histories) of an uninterrupted run.
+void stopBySignal(int ranks, int sig, bool toOneRank, bool resume) {
+  const std::string dir = freshDir("signal_np" + std::to_string(ranks) + "_" + std::to_string(sig));
+  const std::string sc = longCase(dir, 100000000);
+  const std::string out = dir + "/out";
+  const Started run = startPdq({"run", sc, "-q"}, dir, ranks);
+  ASSERT_TRUE(waitFor([&] { return newestRestart(out) >= 500; }, 120)) << "not stepping";
+  const int target = ranks > 0 && toOneRank ? children(run.pid).back() : run.pid;
+  const auto sent = std::chrono::steady_clock::now();
+  ASSERT_EQ(kill(target, sig), 0);
+  const Run r = waitPdq(run);
+  EXPECT_LT(secondsSince(sent), 5.0);
+  EXPECT_EQ(r.code, 4) << r.all();
+  const long at = stoppedAt(r.err);
+  ASSERT_GT(at, 0) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("--restart out/ParticleAlterAttrs." + std::to_string(at) + ".rst"));
+  for (const char* f : {"ParticleAlterAttrs", "Bonds", "State"})
+    EXPECT_TRUE(fs::exists(out + "/" + f + "." + std::to_string(at) + ".rst")) << f;
+  EXPECT_EQ(lastRowStep(out + "/history.csv"), at / 50 * 50);
+  if (!resume) return;
+  const std::string end = std::to_string(at + 1000);
+  const auto whole = runPdq({"run", sc, "-q", "--steps", end, "--out", "whole"}, dir, ranks);
+  ASSERT_EQ(whole.code, 0) << whole.all();
+  const auto resumed = runPdq({"run", sc, "-q", "--steps", end, "--restart",
+                               "out/ParticleAlterAttrs." + std::to_string(at) + ".rst"},
+                              dir, ranks);
+  ASSERT_EQ(resumed.code, 0) << resumed.all();
+  for (const std::string& f : {"/ParticleAlterAttrs." + end + ".rst", "/Bonds." + end + ".rst",
+                               std::string("/history.csv"), std::string("/timehist.dat")})
+    EXPECT_EQ(readFile(out + f), readFile(dir + "/whole" + f)) << f;
+}
+
+}  // namespace
+
+TEST(Reliability, SigtermWritesRestartFilesThatContinueBitwise) {
+  stopBySignal(0, SIGTERM, false, true);
+}
+TEST(Reliability, SigintSighupSigusr1StopAlike) {
+  for (int sig : {SIGINT, SIGHUP, SIGUSR1}) {
+    SCOPED_TRACE(sig);
+    stopBySignal(0, sig, false, false);
+  }
+}
+TEST(Reliability, SigtermToOneRankOfTwoStopsBothAtTheSameStep) {
+  stopBySignal(2, SIGTERM, true, true);
+}
+TEST(Reliability, Sigusr1ToMpirunIsForwardedAndStopsTheJob) {
+  stopBySignal(2, SIGUSR1, false, false);
+}
+
+TEST(Reliability, MaxWallTimeStopsBeforeTheLimitWithRestartFiles) {
+  const std::string dir = freshDir("wall_time");
+  const std::string sc = longCase(dir, 100000000);
+  const auto started = std::chrono::steady_clock::now();
+  const auto r = runPdq({"run", sc, "-q", "--max-wall-time", "4s"}, dir);
+  const double took = secondsSince(started);
+  EXPECT_EQ(r.code, 4) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("by the wall-time limit (--max-wall-time)"));
+  EXPECT_LT(took, 4.0 + 1.0);  // the process itself stopped before 4 s; this adds its launch
+  EXPECT_GT(took, 2.0);
+  const long at = stoppedAt(r.err);
+  EXPECT_TRUE(fs::exists(dir + "/out/ParticleAlterAttrs." + std::to_string(at) + ".rst"));
+  const auto bad = runPdq({"run", sc, "--max-wall-time", "1h30"}, dir);
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_THAT(bad.err, HasSubstr("--max-wall-time: '1h30' is not a duration"));
+}
