@@ -131,4 +131,24 @@ std::vector<std::array<double, 3>> closePackedBox(const ClosePacked& L,
   return pts;
 }
 
+std::array<double, 3> closePackedInset(const ClosePacked& L) {
+  std::array<double, 3> inset{};
+  inset[L.bondAxis] = L.s / 4;
+  inset[3 - L.bondAxis - L.stackAxis] = std::sqrt(3.0) / 2 * L.s / 6;
+  inset[L.stackAxis] = closePackedLayerPitch(L.s) / 2;
+  return inset;
+}
+
+std::vector<std::array<double, 3>> closePackedFill(const ClosePacked& L,
+                                                   const std::array<double, 3>& size,
+                                                   const std::array<double, 3>& origin) {
+  const auto inset = closePackedInset(L);
+  std::array<double, 3> inner{}, start{};
+  for (int k = 0; k < 3; ++k) {
+    inner[k] = size[k] - inset[k];
+    start[k] = origin[k] + inset[k];
+  }
+  return closePackedBox(L, inner, start);
+}
+
 }  // namespace pdq

@@ -51,6 +51,18 @@ struct ClosePacked {
 std::vector<std::array<double, 3>> closePackedBox(const ClosePacked& lattice,
                                                   const std::array<double, 3>& size,
                                                   const std::array<double, 3>& origin = {0, 0, 0});
+// The same lattice shifted so that its particles' cells fill the box: a particle stands for
+// the cell of volume s³/√2 around it (half a plane spacing to each side), and the lattice
+// model is the body those cells fill. The first plane is half a spacing inside each face
+// (along the rows, whose alternate rows are shifted by s/2, a quarter of s; across the
+// rows, whose layers are shifted by a third of the row spacing, a sixth of it), so the
+// cells' mean boundary lies on the faces; the particles whose centres lie in the box.
+std::vector<std::array<double, 3>> closePackedFill(const ClosePacked& lattice,
+                                                   const std::array<double, 3>& size,
+                                                   const std::array<double, 3>& origin = {0, 0, 0});
+// closePackedFill's first plane from each box corner face: s/4 along the bonds, (√3/12)s
+// across the rows, half the layer pitch along the stacking.
+std::array<double, 3> closePackedInset(const ClosePacked& lattice);
 // The smallest box the lattice fits (two particles along every axis): s along the bonds,
 // (√3/2)s across the rows, √(2/3)s along the stacking.
 std::array<double, 3> closePackedMinimumBox(const ClosePacked& lattice);

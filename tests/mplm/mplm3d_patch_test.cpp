@@ -20,8 +20,10 @@ namespace {
 constexpr double E = 24.86e9, nu = 0.2, s = 0.02, L = 0.24;
 using Tensor = std::array<std::array<double, 3>, 3>;
 
-// Mean virial stress (xx, yy, zz, yz, xz, xy) of the particles at least 2 s from every face
-// of an L-cube under the displacement gradient `grad` imposed on every particle.
+// Mean virial stress (xx, yy, zz, yz, xz, xy) of the interior particles of an L-cube under
+// the displacement gradient `grad` imposed on every particle: more than 2√2 s from every
+// face, so that no interaction of theirs carries the surface correction (an interaction
+// is corrected when the lattice site beyond either end, up to 2√2 s away, is missing).
 std::array<double, 6> interiorStress(const ClosePacked& lattice, const Tensor& grad,
                                      const std::string& kinematics) {
   Comm comm;
@@ -39,7 +41,7 @@ std::array<double, 6> interiorStress(const ClosePacked& lattice, const Tensor& g
   const auto names = sim->model().fields();
   auto interior = [&](std::size_t i) {
     const double* X = ctx.particles.fixed(i);
-    const double m = 2 * s;
+    const double m = 2.85 * s;
     return std::all_of(X, X + 3, [&](double x) { return x > m && x < L - m; });
   };
   const double count = ctx.sumOwned([&](std::size_t i) { return interior(i) ? 1.0 : 0.0; });

@@ -44,8 +44,10 @@ TEST(Mplm3dScenarios, CantileverExampleClampsLoadsAndMonitors) {
   for (std::size_t k = 0; k < ps.size(); ++k) {
     const double* f = ps.fixedRow(k);
     const int c = static_cast<int>(f[CONSTRAINT]);
-    // Two planes of particles clamped (X = 0 and s/2 with bonds along X), nothing else held.
-    EXPECT_EQ(c, f[FX_X] < 0.011 ? FIX_ALL : 0) << "particle " << k;
+    // Two planes of particles clamped (X = s/4 and 3s/4 with bonds along X: the cells fill
+    // the box from X = 0), nothing else held.
+    EXPECT_EQ(c, f[FX_X] < 0.016 ? FIX_ALL : 0) << "particle " << k;
+    EXPECT_GT(f[FX_X], 0.0049);
     const bool tip = std::fabs(f[FX_X] - xmax) < 1e-9;
     EXPECT_EQ(f[MONITOR], tip ? 1.0 : 0.0);
     EXPECT_EQ(f[LOAD_Y] < 0, tip);

@@ -82,7 +82,11 @@ Generated beam3d(const Params& p, const Schema& schema, const Params& model) {
 
   const std::array<double, 3> size{length, depth, width};
   const char* keys[3] = {"length", "depth", "width"};
-  const auto need = closePackedMinimumBox(lattice);
+  // The lattice's cells fill the box (closePackedFill): two planes need a stride plus the
+  // inset from the first face.
+  auto need = closePackedMinimumBox(lattice);
+  const auto inset = closePackedInset(lattice);
+  for (int a = 0; a < 3; ++a) need[a] += inset[a];
   for (int a = 0; a < 3; ++a)
     if (size[a] < need[a])
       fail(p,
@@ -91,7 +95,7 @@ Generated beam3d(const Params& p, const Schema& schema, const Params& model) {
                std::to_string(need[a]) + " m along it (two particles at least)",
            keys[a]);
   ParticleSet ps = newParticleSet();
-  addConcrete(ps, closePackedBox(lattice, size));
+  addConcrete(ps, closePackedFill(lattice, size));
   const auto xs = planes(ps, 0, s), ys = planes(ps, 1, s);
   if (supports == "clamped" && static_cast<std::size_t>(clampedPlanes) + 1 >= xs.size())
     fail(p, "clamped_planes leaves no free particles along the length", "clamped_planes");

@@ -37,6 +37,7 @@ class Mplm3d final : public Model {
   void configure(const Params& p) override {
     par_.read(p);
     corot_ = par_.kinematics == "corotational";
+    surface_ = p.flag("surface_correction", true);
     if (par_.fractureEnergy > 0)
       throw InputError(p.owner(), 0,
                        "fracture_energy is not available in 3D: give tensile_ratio (alpha_t)");
@@ -80,12 +81,14 @@ class Mplm3d final : public Model {
       constraint_[i] = static_cast<int>(P.fixed(i)[CONSTRAINT]);
     }
     inter_.resize(ctx.bonds.count());
+    const std::vector<double> surface = surfaceFactors(ctx);
     // Gershgorin bound of the largest eigenvalue of M⁻¹C, C the damping of eq. 4.21.
     double gamma = 0;
     for (std::size_t i = 0; i < n; ++i) {
       double gt = 0, gr = 0;
       for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
-        inter_[b] = makeInteraction(P, i, static_cast<std::size_t>(ctx.bonds.partner(b)));
+        inter_[b] =
+            makeInteraction(P, i, static_cast<std::size_t>(ctx.bonds.partner(b)), surface[b]);
         gt += 2 * inter_[b].c;
         gr += 2 * inter_[b].cr;
       }
@@ -309,7 +312,61 @@ class Mplm3d final : public Model {
     return mplm::interacts(end(fi), end(fj), distance(fi, fj), par_.horizon(), par_.s);
   }
 
-  Interaction makeInteraction(const Particles& P, std::size_t i, std::size_t j) const {
+  // Surface correction: a particle on a free face lacks the concrete interactions whose
+  // partners would lie outside the body. Under a uniform strain a missing interaction along
+  // −r carries what the one along +r carries (the lattice is centrosymmetric), so the
+  // interaction i→i+r takes over the half of the missing i→i−r that belongs to i's cell.
+  // Per concrete interaction ij (chord r): 1 + ½ if i has no partner at −r, + ½ if j has
+  // none at +r; every particle's cell then stores the continuum's energy under any uniform
+  // strain, and the lattice is the body its particle volumes s³/√2 fill. 1 for steel.
+  std::vector<double> surfaceFactors(Context& ctx) const {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    std::vector<double> factor(B.count(), 1.0);
+    if (!surface_) return factor;
+    auto concrete = [&](std::size_t i, std::size_t b) {
+      return !isSteel(P.fixed(i)) && !isSteel(P.fixed(static_cast<std::size_t>(B.partner(b))));
+    };
+    auto chord = [&](std::size_t i, std::size_t b) {
+      const double *fi = P.fixed(i), *fj = P.fixed(static_cast<std::size_t>(B.partner(b)));
+      return Vec{fj[FX_X] - fi[FX_X], fj[FX_Y] - fi[FX_Y], fj[FX_Z] - fi[FX_Z]};
+    };
+    // Per local particle, the IDs of the partners whose interaction has no opposite one
+    // (−1 pads); ghosts get theirs from their owners.
+    constexpr int width = 18;  // interactions of an fcc particle
+    std::vector<double> open(width * P.local(), -1.0);
+    const double tol = 1e-6 * par_.s;
+    for (std::size_t i = 0; i < P.owned(); ++i) {
+      int k = 0;
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        if (!concrete(i, b)) continue;
+        const Vec r = chord(i, b);
+        bool opposite = false;
+        for (std::size_t c = B.begin(i); c < B.end(i) && !opposite; ++c) {
+          if (c == b || !concrete(i, c)) continue;
+          const Vec q = chord(i, c);
+          opposite = std::fabs(r[0] + q[0]) < tol && std::fabs(r[1] + q[1]) < tol &&
+                     std::fabs(r[2] + q[2]) < tol;
+        }
+        if (!opposite && k < width) open[width * i + k++] = static_cast<double>(B.partnerGid(b));
+      }
+    }
+    ctx.refreshGhosts(open, width);
+    auto lacks = [&](std::size_t i, Gid partner) {
+      const double* row = &open[width * i];
+      return std::find(row, row + width, static_cast<double>(partner)) != row + width;
+    };
+    for (std::size_t i = 0; i < P.owned(); ++i)
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        if (!concrete(i, b)) continue;
+        const auto j = static_cast<std::size_t>(B.partner(b));
+        factor[b] = 1 + 0.5 * lacks(i, B.partnerGid(b)) + 0.5 * lacks(j, P.gid(i));
+      }
+    return factor;
+  }
+
+  Interaction makeInteraction(const Particles& P, std::size_t i, std::size_t j,
+                              double surface) const {
     const double* fi = P.fixed(i);
     const double* fj = P.fixed(j);
     Interaction k;
@@ -331,9 +388,9 @@ class Mplm3d final : public Model {
       k.kt = mplm::linkBending(par_.link, k_.c, s, L);
     } else {
       const bool nearest = L < 1.2 * s;  // else second nearest, at √2 s: axial only
-      k.ka = (nearest ? k_.a : k_.a2) / L;
-      k.kb = nearest ? k_.b / L : 0.0;
-      k.kt = nearest ? k_.c / L : 0.0;
+      k.ka = surface * (nearest ? k_.a : k_.a2) / L;
+      k.kb = nearest ? surface * k_.b / L : 0.0;
+      k.kt = nearest ? surface * k_.c / L : 0.0;
     }
     k.c = mplm::dampingCoefficient(par_.zeta, k.ka, massOf(fi), massOf(fj));
     k.cr = mplm::dampingCoefficient(par_.zetaRotation, 4 * k.kb, inertiaOf(fi), inertiaOf(fj));
@@ -507,7 +564,8 @@ class Mplm3d final : public Model {
   }
 
   mplm::Parameters par_;
-  bool corot_ = true;  // kinematics = "corotational"
+  bool corot_ = true;    // kinematics = "corotational"
+  bool surface_ = true;  // surface_correction
   ElasticConstants k_;
   std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
   mutable std::vector<Quat> q_;     // orientation per local particle (co-rotational form)
