@@ -8,6 +8,8 @@
 //                                           prints throughput; with DIR writes DIR/pdq.disp
 //                                           (ID ux uy uz) and DIR/lammps.data + DIR/lammps.in,
 //                                           the same problem for LAMMPS's PERI package
+//   pd_bench check_cost N STEPS             the block (PMB) with and without the
+//                                           instability check every step: its cost
 //   pd_bench compare FILE_A FILE_B          largest |u_a - u_b| over the largest |u_a|
 //   pd_bench bandwidth                      one core's memory read bandwidth
 #include <mpi.h>
@@ -145,6 +147,32 @@ int block(int argc, char** argv, Comm& comm) {
   return 0;
 }
 
+// The instability check's cost: the PMB block run with the check every step and without
+// it, alternately three times each (the fastest of each counts).
+int checkCost(int argc, char** argv, Comm& comm) {
+  if (argc < 4) throw InputError("pd_bench", 0, "usage: pd_bench check_cost N STEPS");
+  lammps::Block bl;
+  bl.n = std::stoi(argv[2]);
+  const long steps = std::stol(argv[3]);
+  double best[2] = {1e300, 1e300};
+  for (int round = 0; round < 6; ++round) {
+    const int on = round % 2;
+    Problem pb = makeProblem("pmb", lammps::blockParams(bl, "pmb"), {});
+    pb.particles = lammps::blockParticles(bl, pb.model->schema());
+    pb.run.steps = steps;
+    pb.run.checkEvery = on;
+    pb.run.outDir = "pd_check_cost_out";
+    const auto simulation = makeSimulation(std::move(pb), comm);
+    best[on] = std::min(best[on], timedRun(*simulation, comm));
+  }
+  if (comm.root())
+    std::printf(
+        "pmb N=%d^3 steps=%ld ranks=%d: without check %.4f s, checked every step %.4f s: "
+        "check cost %.2f%% of a step\n",
+        bl.n, steps, comm.size(), best[0], best[1], 100 * (best[1] - best[0]) / best[0]);
+  return 0;
+}
+
 int compare(int argc, char** argv) {
   if (argc < 4) throw InputError("pd_bench", 0, "usage: pd_bench compare A B");
   const lammps::Difference d = lammps::compare(lammps::readDisplacements(argv[2]),
@@ -186,9 +214,10 @@ int main(int argc, char** argv) {
     const std::string what = argc > 1 ? argv[1] : "";
     if (what == "cantilever") return cantilever(argc, argv, comm);
     if (what == "block") return block(argc, argv, comm);
+    if (what == "check_cost") return checkCost(argc, argv, comm);
     if (what == "compare") return comm.root() ? compare(argc, argv) : 0;
     if (what == "bandwidth") return comm.root() ? bandwidth() : 0;
-    std::fprintf(stderr, "usage: pd_bench cantilever|block|compare|bandwidth ...\n");
+    std::fprintf(stderr, "usage: pd_bench cantilever|block|check_cost|compare|bandwidth ...\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pd_bench: %s\n", e.what());

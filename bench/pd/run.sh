@@ -53,6 +53,10 @@ for model in pmb lps; do
 done
 
 echo
+echo "== Instability check (non-finite values, every step) on the PMB block, 1 rank =="
+(cd "$WORK" && "$BENCH" check_cost "$N" 200)
+
+echo
 echo "== Thesis Tables 3.2/3.3: cantilever ${M} x ${D}, monitored particle's final Y =="
 for model in lps pmb; do
   ys=()

@@ -33,6 +33,8 @@ int runCommand(const RunOptions& o) {
   StopRequest stopRequest(o.maxWallTime);
   sim.setStopCheck([&] { return stopRequest.poll(); });
   sim.setup();
+  if (comm.root())
+    for (const auto& w : sim.context().warnings()) printError(w, "pdq: warning: ");
   const bool talk = comm.root() && o.verbosity != Verbosity::Quiet;
   const std::string about = summary(sim, modelName, o.input);
   if (talk && o.verbosity == Verbosity::Verbose) std::printf("%s", about.c_str());

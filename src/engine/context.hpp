@@ -72,6 +72,12 @@ class Context {
   const std::string& stopReason() const { return stopReason_; }
   // Lines for debug.txt (each rank writes its own section) and for the terminal (rank 0).
   std::ostream& log() { return log_; }
+  // A warning for the user: logged, and printed on standard error by the pdq command.
+  void warn(const std::string& text) {
+    log_ << "warning: " << text << "\n";
+    warnings_.push_back(text);
+  }
+  const std::vector<std::string>& warnings() const { return warnings_; }
   bool root() const { return comm_.root(); }
 
   // --- set by the engine ---
@@ -89,6 +95,7 @@ class Context {
   Loading loading_;
   Integrator* integrator_ = nullptr;
   std::string stopReason_;
+  std::vector<std::string> warnings_;
 };
 
 }  // namespace pdq

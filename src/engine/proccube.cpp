@@ -289,13 +289,14 @@ void ProcCube::refreshGhosts(std::span<double> values, int width) {
   }
 }
 
-double ProcCube::maxDisplacementSinceRebuild() const {
+double ProcCube::maxDisplacementSinceRebuild(std::size_t* which) const {
   double m = 0;
   for (std::size_t i = 0; i < p_.owned(); ++i) {
     const double* x = p_.alter(i);
     const double* x0 = &rebuildPos_[3 * i];
     const double d = (x[0] - x0[0]) * (x[0] - x0[0]) + (x[1] - x0[1]) * (x[1] - x0[1]) +
                      (x[2] - x0[2]) * (x[2] - x0[2]);
+    if (d > m && which) *which = i;
     m = std::max(m, d);
   }
   return std::sqrt(m);

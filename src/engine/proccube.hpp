@@ -56,7 +56,8 @@ class ProcCube {
   void remapBonds(long step);
 
   // Largest displacement of an owned particle since the last rebuild (this rank).
-  double maxDisplacementSinceRebuild() const;
+  // The largest distance an owned particle moved since the last rebuild (and which one).
+  double maxDisplacementSinceRebuild(std::size_t* which = nullptr) const;
 
   // --- cells, for neighbour iteration ---
   // Visits every particle j (owned or ghost, j != i) in the cells around i's cell, in the

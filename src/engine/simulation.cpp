@@ -98,6 +98,13 @@ void Simulation::setup() {
   cube_->rebuild(cfg_.firstStep);
   ctx_ = std::make_unique<Context>(particles_, bonds_, *cube_, comm_, debug_);
   integrator_ = std::make_unique<Integrator>(*model_);
+  {
+    const Motion m = model_->motion();
+    const Schema& s = particles_.schema();
+    for (const auto* names : {&m.force, &m.moment})
+      for (const auto& n : *names)
+        if (s.integIndex(n) >= 0) forceColumns_.push_back(s.integIndex(n));
+  }
   ctx_->setIntegrator(integrator_.get());
   ctx_->setLoading(cfg_.loading);
   step_ = cfg_.firstStep;
@@ -189,24 +196,38 @@ bool Simulation::advance() {
     Timers::Scope t(timers_, Phase::Integrate);
     model_->integrate(*ctx_);
   }
-  // One reduction a step, when anything needs one: a stop asked for from outside, and how
-  // far particles moved since the last shuffle.
+  bool saving = false;  // restart files are due at this step
+  for (const auto& o : outputs_)
+    saving |= o->capturesState() && (o->due(step_) || (step_ == cfg_.steps && o->atEnd()));
+  // Instability is looked for before anything is saved, so no restart file holds it.
+  const bool check = (cfg_.checkEvery > 0 && step_ % cfg_.checkEvery == 0) || saving;
+  // One reduction a step, when anything needs one: a stop asked for from outside, how far
+  // particles moved since the last shuffle, and the first unstable particle.
+  const double none = -std::numeric_limits<double>::infinity();
   std::vector<double> probe{stopCheck_ ? static_cast<double>(stopCheck_()) : 0.0,
-                            model_->shuffles() ? cube_->maxDisplacementSinceRebuild() : 0.0};
-  if (stopCheck_ || model_->shuffles()) probe = comm_.max(probe);
+                            model_->shuffles() ? cube_->maxDisplacementSinceRebuild() : 0.0,
+                            check ? firstUnstable() : none};
+  if (stopCheck_ || model_->shuffles() || check) probe = comm_.max(probe);
+  if (probe[2] > none) reportInstability(static_cast<Gid>(-probe[2]), "");
+  if (model_->shuffles() && slack_ > 0 && probe[1] > 2 * slack_) {
+    // Pairs may have come within the horizon unseen: the step was too violent.
+    std::size_t i = 0;
+    const double d = cube_->maxDisplacementSinceRebuild(&i);
+    const double far = d == probe[1] ? static_cast<double>(particles_.gid(i)) : none;
+    std::ostringstream os;
+    os << "moved " << probe[1] << " since the last shuffle, more than the skin " << 2 * slack_
+       << " (cell size minus horizon), so neighbours may have been missed";
+    reportInstability(static_cast<Gid>(comm_.max(far)), os.str());
+  }
   // The last step ends the run anyway, with its own outputs.
   stopCode_ = step_ < cfg_.steps ? static_cast<int>(probe[0]) : 0;
   const bool interrupted = stopCode_ > 0;
   bool shuffleNow = false;
-  if (model_->shuffles()) {
+  if (model_->shuffles())
     // Shuffle once some particle may have moved far enough to change neighbours, and at
     // steps whose state is saved for a restart, so that a restarted run starts from the
     // same cells (and periodic wraps) as the original and continues bit for bit.
-    bool saving = interrupted;
-    for (const auto& o : outputs_)
-      saving |= o->capturesState() && (o->due(step_) || (step_ == cfg_.steps && o->atEnd()));
-    shuffleNow = probe[1] > slack_ || saving;
-  }
+    shuffleNow = probe[1] > slack_ || saving || interrupted;
   if (shuffleNow) {
     Timers::Scope t(timers_, Phase::Shuffle);
     cube_->shuffle(step_);
@@ -221,7 +242,6 @@ bool Simulation::advance() {
     stats_.haloBytes = cube_->stats().haloBytes;
     stats_.haloWallParticles = cube_->stats().haloWallParticles;
   }
-  if (cfg_.checkEvery > 0 && step_ % cfg_.checkEvery == 0) checkFinite();
   const bool stop = !ctx_->stopReason().empty();
   if (stop) {
     ended_ = true;
@@ -243,23 +263,63 @@ void Simulation::run() {
   finish();
 }
 
-void Simulation::checkFinite() {
-  double bad = -1;
-  const int nA = particles_.schema().nAlter();
-  for (std::size_t i = 0; i < particles_.owned() && bad < 0; ++i)
-    for (int k = 0; k < nA; ++k)
-      if (!std::isfinite(particles_.alter(i)[k])) {
-        bad = static_cast<double>(particles_.gid(i));
-        break;
-      }
-  bad = comm_.max(bad);
-  if (bad >= 0) {
-    std::ostringstream os;
-    os << "step " << step_ << ": particle " << static_cast<Gid>(bad)
-       << " has a non-finite attribute; the run is unstable (reduce the time step); the "
-          "last restart file written is the last good state";
-    throw RunError(os.str());
+double Simulation::firstUnstable() const {
+  const std::size_t n = particles_.owned();
+  const int nA = particles_.schema().nAlter(), nI = particles_.schema().nInteg();
+  if (n == 0) return -std::numeric_limits<double>::infinity();
+  // x - x is 0 for a finite x and NaN otherwise: one sweep over the tables, no branches.
+  // Four sums, so the additions do not wait on each other.
+  double z[4] = {0, 0, 0, 0};
+  const double* a = particles_.alter(0);
+  const std::size_t nAll = n * nA;
+  for (std::size_t k = 0; k < nAll; ++k) z[k % 4] += a[k] - a[k];
+  const double* f = particles_.integ(0);
+  for (int c : forceColumns_)
+    for (std::size_t i = 0; i < n; ++i) z[i % 4] += f[i * nI + c] - f[i * nI + c];
+  if (z[0] + z[1] + z[2] + z[3] == 0) return -std::numeric_limits<double>::infinity();
+  bool any = false;
+  Gid first = 0;  // owned particles are not in ID order: the smallest ID is reported
+  for (std::size_t i = 0; i < n; ++i) {
+    bool bad = false;
+    for (int k = 0; k < nA; ++k) bad |= !std::isfinite(particles_.alter(i)[k]);
+    for (int k : forceColumns_) bad |= !std::isfinite(particles_.integ(i)[k]);
+    if (bad) first = any ? std::min(first, particles_.gid(i)) : particles_.gid(i);
+    any |= bad;
   }
+  return -static_cast<double>(first);
+}
+
+void Simulation::reportInstability(Gid id, const std::string& what) {
+  // The owner describes the particle; every rank throws the same message.
+  std::string mine;
+  for (std::size_t i = 0; i < particles_.owned(); ++i) {
+    if (particles_.gid(i) != id) continue;
+    const Schema& s = particles_.schema();
+    std::ostringstream os;
+    os << std::setprecision(9) << "particle " << id << " at (" << particles_.alter(i)[0] << ", "
+       << particles_.alter(i)[1] << ", " << particles_.alter(i)[2] << ")";
+    if (what.empty()) {
+      std::string bad;
+      for (int k = 0; k < s.nAlter(); ++k)
+        if (!std::isfinite(particles_.alter(i)[k])) bad += " " + s.alter[k];
+      for (int k : forceColumns_)
+        if (!std::isfinite(particles_.integ(i)[k])) bad += " " + s.integ[k];
+      os << " has non-finite" << bad;
+    } else {
+      os << " " << what;
+    }
+    mine = os.str();
+  }
+  auto blocks = comm_.gather(std::vector<char>(mine.begin(), mine.end()));
+  std::vector<char> all;
+  for (auto& b : blocks) all.insert(all.end(), b.begin(), b.end());
+  all = comm_.broadcast(all);
+  std::ostringstream os;
+  os << "step " << step_ << ": " << std::string(all.begin(), all.end())
+     << "; the run is unstable: lower the time step (dt = " << ctx_->dt()
+     << ") or check the loads, supports and material parameters; restart files written "
+        "before this step hold good states";
+  throw RunError(os.str());
 }
 
 void Simulation::writeOutputs(bool last, bool checkpoint) {

@@ -36,7 +36,9 @@ struct RunConfig {
   Loading loading;                         // the load protocol
   std::string outDir = ".";
   std::string source = "input";  // file named in configuration errors
-  long checkEvery = 100;         // scan for non-finite positions every N steps
+  // Check for instability (non-finite attributes or forces, a particle moving further
+  // than the skin) every N steps (0: only at steps that save restart files).
+  long checkEvery = 1;
 };
 
 // What a restart brings back beyond the particles' attributes: the bonds, keyed by (owner,
@@ -91,7 +93,8 @@ class Simulation {
  private:
   Domain makeDomain() const;
   void writeOutputs(bool last, bool checkpoint = false);
-  void checkFinite();
+  double firstUnstable() const;  // -(smallest unstable particle's ID) on this rank, or -inf
+  [[noreturn]] void reportInstability(Gid id, const std::string& what);
   void writeLogs();  // debug.txt (appended) and timing.out (rewritten); collective
 
   std::unique_ptr<Model> model_;
@@ -114,6 +117,7 @@ class Simulation {
   StepStats stats_;
   long step_ = 0;
   double slack_ = 0;
+  std::vector<int> forceColumns_;  // the motion's force and moment columns (integ)
   std::function<int()> stopCheck_;
   int stopCode_ = 0;
   bool setUp_ = false, ended_ = false, resumed_ = false;

@@ -239,3 +239,46 @@ TEST(Reliability, MaxWallTimeStopsBeforeTheLimitWithRestartFiles) {
   EXPECT_EQ(bad.code, 2);
   EXPECT_THAT(bad.err, HasSubstr("--max-wall-time: '1h30' is not a duration"));
 }
+
+TEST(Reliability, InstabilityStopsInItsStepBeforeAnyRestartFileHoldsIt) {
+  for (int ranks : {0, 2}) {
+    SCOPED_TRACE(ranks);
+    // Unbreakable springs stepped at 60 times their stable step: the motion grows until
+    // it overflows. A restart file every step: the unstable one must not be written.
+    const std::string dir = freshDir("unstable_np" + std::to_string(ranks));
+    const std::string sc = springCase(dir, 3000);
+    edit(sc, "dt = 0.05", "dt = 3");
+    edit(sc, "critical_stretch = 0.02", "critical_stretch = 0");
+    edit(sc, "restart_every = 10", "restart_every = 1");
+    const auto r = runPdq({"run", sc, "-q"}, dir, ranks);
+    EXPECT_EQ(r.code, 3) << r.all();
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(r.err, m, std::regex(R"(error: step (\d+): particle 0 at \()")))
+        << r.err;
+    const long at = std::stol(m[1]);
+    EXPECT_THAT(r.err, HasSubstr("has non-finite x y z vx vy vz fx fy fz"));
+    EXPECT_THAT(r.err, HasSubstr("lower the time step (dt = 3)"));
+    EXPECT_EQ(r.err.find("pdq: error"), r.err.rfind("pdq: error")) << "printed once: " << r.err;
+    EXPECT_TRUE(fs::exists(dir + "/out/ParticleAlterAttrs." + std::to_string(at - 1) + ".rst"));
+    EXPECT_FALSE(fs::exists(dir + "/out/ParticleAlterAttrs." + std::to_string(at) + ".rst"));
+    for (const auto& f : filesUnder(dir + "/out")) {
+      const std::string text = readFile(dir + "/out/" + f);
+      EXPECT_EQ(text.find("nan"), std::string::npos) << f;
+      EXPECT_EQ(text.find("inf"), std::string::npos) << f;
+    }
+  }
+}
+
+TEST(Reliability, MplmWarnsOnStandardErrorWhenDtExceedsItsStableStep) {
+  const std::string dir = freshDir("mplm_dt");
+  const std::string sc = dir + "/tension.toml";
+  writeFile(sc, readFile(sourceDir() + "/examples/mplm/tension_x.toml"));
+  const auto fine = runPdq({"run", sc, "-q", "--steps", "2"}, dir);
+  EXPECT_EQ(fine.code, 0) << fine.all();
+  EXPECT_EQ(fine.err, "");
+  edit(sc, "dt = 1.808e-7", "dt = 1e-5");
+  const auto r = runPdq({"run", sc, "-q", "--steps", "2", "--out", "fast"}, dir);
+  EXPECT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("pdq: warning: mplm2d: dt = 1e-05 s exceeds the stable time step "
+                               "3.672e-06 s"));
+}

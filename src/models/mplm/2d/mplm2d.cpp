@@ -79,6 +79,14 @@ class Mplm2d final : public Model {
       ctx.log() << std::setprecision(4) << "mplm2d: highest frequency " << omegaMax_
                 << " rad/s, stable dt " << stable << " s, s/(pi c0) = " << thesisDt
                 << " s, using dt " << ctx.dt() << " s\n";
+    if (ctx.dt() > stable) {
+      std::ostringstream os;
+      os << std::setprecision(4) << "mplm2d: dt = " << ctx.dt()
+         << " s exceeds the stable time step " << stable
+         << " s: the run will blow up; lower dt, or leave it out to use dt_safety x the stable "
+            "step";
+      ctx.warn(os.str());
+    }
   }
 
   void force(Context& ctx) override {
@@ -136,7 +144,8 @@ class Mplm2d final : public Model {
         b.value[d] = X[DISP_X + d];
         if (in_.constraint[i] & bit[d]) b.constraint[d] = pdq::Constraint::Prescribed;
       }
-      if ((in_.constraint[i] & (REST_Y | FIX_Y)) == REST_Y) b.constraint[1] = pdq::Constraint::Resting;
+      if ((in_.constraint[i] & (REST_Y | FIX_Y)) == REST_Y)
+        b.constraint[1] = pdq::Constraint::Resting;
     }
   }
 
