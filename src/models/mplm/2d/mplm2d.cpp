@@ -75,18 +75,7 @@ class Mplm2d final : public Model {
     const double zm = std::max(par_.zeta, par_.zetaRotation) * omegaMax_ / omegaBond;
     const double stable = stableStep(omegaMax_, zm);
     if (!(par_.dt > 0)) ctx.setDt(par_.dtSafety * stable);
-    if (ctx.root())
-      ctx.log() << std::setprecision(4) << "mplm2d: highest frequency " << omegaMax_
-                << " rad/s, stable dt " << stable << " s, s/(pi c0) = " << thesisDt
-                << " s, using dt " << ctx.dt() << " s\n";
-    if (ctx.dt() > stable) {
-      std::ostringstream os;
-      os << std::setprecision(4) << "mplm2d: dt = " << ctx.dt()
-         << " s exceeds the stable time step " << stable
-         << " s: the run will blow up; lower dt, or leave it out to use dt_safety x the stable "
-            "step";
-      ctx.warn(os.str());
-    }
+    mplm::reportTimeStep(ctx, "mplm2d", omegaMax_, stable, thesisDt);
   }
 
   void force(Context& ctx) override {

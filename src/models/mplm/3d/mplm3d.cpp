@@ -102,18 +102,7 @@ class Mplm3d final : public Model {
     const double zm = ctx.max(gamma) / (2 * omegaMax_);
     const double stable = mplm::stableStep(omegaMax_, zm);
     if (!(par_.dt > 0)) ctx.setDt(par_.dtSafety * stable);
-    if (ctx.root())
-      ctx.log() << std::setprecision(4) << "mplm3d: highest frequency " << omegaMax_
-                << " rad/s, stable dt " << stable << " s, s/(pi c0) = " << thesisDt
-                << " s, using dt " << ctx.dt() << " s\n";
-    if (ctx.dt() > stable) {
-      std::ostringstream os;
-      os << std::setprecision(4) << "mplm3d: dt = " << ctx.dt()
-         << " s exceeds the stable time step " << stable
-         << " s: the run will blow up; lower dt, or leave it out to use dt_safety x the stable "
-            "step";
-      ctx.warn(os.str());
-    }
+    mplm::reportTimeStep(ctx, "mplm3d", omegaMax_, stable, thesisDt);
   }
 
   void force(Context& ctx) override {

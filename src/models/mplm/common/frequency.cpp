@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iomanip>
+#include <sstream>
 
 namespace pdq::mplm {
 namespace {
@@ -51,6 +53,22 @@ double highestFrequency(Context& ctx, const DofSystem& sys, const RestoringForce
     for (std::size_t k = 0; k < w.size(); ++k) w[k] = z[k] / nz;
   }
   return std::sqrt(std::max(lambda, 0.0));
+}
+
+void reportTimeStep(Context& ctx, const char* model, double omegaMax, double stable,
+                    double thesisDt) {
+  if (ctx.root())
+    ctx.log() << std::setprecision(4) << model << ": highest frequency " << omegaMax
+              << " rad/s, stable dt " << stable << " s, s/(pi c0) = " << thesisDt << " s, using dt "
+              << ctx.dt() << " s\n";
+  if (ctx.dt() > stable) {
+    std::ostringstream os;
+    os << std::setprecision(4) << model << ": dt = " << ctx.dt()
+       << " s exceeds the stable time step " << stable
+       << " s: the run will blow up; lower dt, or leave it out to use dt_safety x the stable "
+          "step";
+    ctx.warn(os.str());
+  }
 }
 
 }  // namespace pdq::mplm

@@ -33,4 +33,9 @@ inline double stableStep(double omegaMax, double zeta) {
   return 2 / omegaMax * (std::sqrt(1 + zeta * zeta) - zeta);
 }
 
+// Logs the frequency and the steps, and warns (on standard error through the pdq command)
+// when the time step in use exceeds the stable one.
+void reportTimeStep(Context& ctx, const char* model, double omegaMax, double stable,
+                    double thesisDt);
+
 }  // namespace pdq::mplm
