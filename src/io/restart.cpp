@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <unordered_map>
 
@@ -100,6 +101,7 @@ void RestartOutput::write(OutputContext& out) {
     row("dt", {out.ctx.dt()});
     row("integrator", out.ctx.integrator().state());
     row("model", out.model.saveState());
+    f.stream() << "bonds " << nBondsTotal << "\n";  // so a lost or cut bonds file is seen
     f.commit();
   }
   if (withFixed) {
@@ -142,8 +144,8 @@ static long stepOfHeader(const std::string& path) {
   return step;
 }
 
-// State.<step>.rst: lines "key value...".
-static void readState(const std::string& path, RestartState& st) {
+// State.<step>.rst: lines "key value..."; `bonds` gets the bond count (-1: not given).
+static void readState(const std::string& path, RestartState& st, long& bonds) {
   std::ifstream in(path);
   std::string line;
   int n = 0;
@@ -173,8 +175,12 @@ static void readState(const std::string& path, RestartState& st) {
       st.integrator = values;
     } else if (key == "model") {
       st.model = values;
+    } else if (key == "bonds" && values.size() == 1 && values[0] >= 0 &&
+               values[0] == static_cast<double>(static_cast<long>(values[0]))) {
+      bonds = static_cast<long>(values[0]);
     } else {
-      throw InputError(path, n, "expected 'dt VALUE', 'integrator VALUES' or 'model VALUES'");
+      throw InputError(path, n,
+                       "expected 'dt VALUE', 'integrator VALUES', 'model VALUES' or 'bonds N'");
     }
   }
   if (!dt) throw InputError(path, 0, "the state file has no 'dt' line");
@@ -210,7 +216,8 @@ RestartState readRestart(const std::string& path, Problem& pb) {
   std::string dir = std::filesystem::path(path).parent_path().string();
   if (dir.empty()) dir = ".";
   const std::string spath = stateRestartPath(dir, step);
-  if (std::filesystem::exists(spath)) readState(spath, bonds);
+  long bondCount = -1;
+  if (std::filesystem::exists(spath)) readState(spath, bonds, bondCount);
   const std::string fpath = fixedRestartPath(dir, step);
   if (std::filesystem::exists(fpath))
     for (const auto& r : readNumberTable(fpath, 1 + ps.nFixed)) {
@@ -220,14 +227,61 @@ RestartState readRestart(const std::string& path, Problem& pb) {
       std::copy(r.values.begin() + 1, r.values.end(), ps.fixedRow(it->second));
     }
   const std::string bpath = bondRestartPath(dir, step);
-  if (!std::filesystem::exists(bpath)) return bonds;
+  if (!std::filesystem::exists(bpath)) {
+    if (bondCount > 0)
+      throw InputError(
+          bpath, 0,
+          "missing: " + spath + " says the state has " + std::to_string(bondCount) + " bonds");
+    return bonds;
+  }
+  {
+    std::ifstream in(bpath);
+    std::string first;
+    std::getline(in, first);
+    const std::string tag = "# pdq bonds: step " + std::to_string(step);
+    if (first != tag)
+      throw InputError(
+          bpath, 1, "not the bonds of step " + std::to_string(step) + " (expected '" + tag + "')");
+  }
   const int nB = schema.nBond();
+  std::map<std::pair<Gid, Gid>, int> lineOf;
+  auto id = [&](double v, int line, const char* what) {
+    const Gid g = static_cast<Gid>(v);
+    if (static_cast<double>(g) != v || !index.count(g))
+      throw InputError(
+          bpath, line,
+          std::string(what) + " " + numberText(v) + " is not a particle of the problem");
+    return g;
+  };
   for (const auto& r : readNumberTable(bpath, 3 + nB)) {
-    bonds.owner.push_back(static_cast<Gid>(r.values[0]));
-    bonds.partner.push_back(static_cast<Gid>(r.values[1]));
+    const Gid owner = id(r.values[0], r.line, "owner"),
+              partner = id(r.values[1], r.line, "partner");
+    if (owner == partner)
+      throw InputError(bpath, r.line, "particle " + std::to_string(owner) + " is bonded to itself");
+    if (r.values[2] != 0 && r.values[2] != 1)
+      throw InputError(bpath, r.line,
+                       "the dead flag is " + numberText(r.values[2]) + "; it must be 0 or 1");
+    if (!lineOf.emplace(std::make_pair(owner, partner), r.line).second)
+      throw InputError(
+          bpath, r.line,
+          "the bond " + std::to_string(owner) + "-" + std::to_string(partner) + " is listed twice");
+    bonds.owner.push_back(owner);
+    bonds.partner.push_back(partner);
     bonds.dead.push_back(r.values[2] != 0 ? 1 : 0);
     bonds.attrs.insert(bonds.attrs.end(), r.values.begin() + 3, r.values.end());
   }
+  if (bondCount >= 0 && static_cast<long>(bonds.owner.size()) != bondCount)
+    throw InputError(bpath, 0,
+                     "has " + std::to_string(bonds.owner.size()) + " bonds but " + spath +
+                         " says " + std::to_string(bondCount) + " (cut short?)");
+  // Every bond is held by both of its particles.
+  for (const auto& [pair, line] : lineOf)
+    if (!lineOf.count({pair.second, pair.first}))
+      throw InputError(bpath, line,
+                       "the bond " + std::to_string(pair.first) + "-" +
+                           std::to_string(pair.second) + " has no partner line " +
+                           std::to_string(pair.second) + " " + std::to_string(pair.first) +
+                           " (one-sided)");
   return bonds;
 }
 

@@ -5,8 +5,11 @@
 // Bonds.<step>.rst holds every bond's state (owner ID, partner ID, dead flag, bond
 // attributes), so damage survives a restart. State.<step>.rst holds what the engine and
 // the model keep between steps (the time step, the integrator's hold damping, the model's
-// saveState()). A run restarted from a step continues bitwise as the uninterrupted run
-// would have, whatever its number of steps.
+// saveState()) and the number of bonds. A run restarted from a step continues bitwise as
+// the uninterrupted run would have, whatever its number of steps. Reading is strict: a
+// bonds file that is missing, of another step, cut short (fewer bonds than the state file
+// says), with a self-bond, a one-sided bond, a bond listed twice, an ID not in the problem
+// or a dead flag other than 0 or 1 is an error naming the file and line.
 #include <string>
 
 #include "engine/output.hpp"

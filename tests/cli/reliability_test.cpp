@@ -282,3 +282,71 @@ TEST(Reliability, MplmWarnsOnStandardErrorWhenDtExceedsItsStableStep) {
   EXPECT_THAT(r.err, HasSubstr("pdq: warning: mplm2d: dt = 1e-05 s exceeds the stable time step "
                                "3.672e-06 s"));
 }
+
+TEST(Reliability, RestartFilesAreReadStrictly) {
+  const std::string dir = freshDir("strict_restart");
+  const std::string sc = springCase(dir, 40);
+  ASSERT_EQ(runPdq({"run", sc, "-q"}, dir).code, 0);
+  const std::string bonds = readFile(dir + "/out/Bonds.20.rst");
+  // The lines of Bonds.20.rst: two header lines, then "owner partner dead ...".
+  std::vector<std::string> lines;
+  {
+    std::istringstream in(bonds);
+    for (std::string l; std::getline(in, l);) lines.push_back(l + "\n");
+  }
+  ASSERT_GT(lines.size(), 10u);
+  auto joined = [&](std::size_t from, std::size_t to) {
+    std::string t;
+    for (std::size_t k = from; k < to; ++k) t += lines[k];
+    return t;
+  };
+  const std::string third = lines[2];  // the first bond, line 3
+  const auto sp = third.find(' ');
+  const auto sp2 = third.find(' ', sp + 1);
+  const std::string owner = third.substr(0, sp), partner = third.substr(sp + 1, sp2 - sp - 1);
+  struct Case {
+    const char* name;
+    std::string text;  // the new Bonds.20.rst; empty: none
+    std::string expected;
+  };
+  const std::vector<Case> cases = {
+      {"missing", "", "Bonds.20.rst: missing: "},
+      {"empty", joined(0, 2), "Bonds.20.rst: has 0 bonds but"},
+      {"truncated at a line", joined(0, lines.size() / 2), "(cut short?)"},
+      {"truncated in a line", joined(0, 5) + lines[5].substr(0, 4), "Bonds.20.rst:6: expected"},
+      {"one-sided", joined(0, 2) + owner + " 127" + third.substr(sp2) + joined(3, lines.size()),
+       "Bonds.20.rst:3: the bond " + owner + "-127 has no partner line 127 " + owner +
+           " (one-sided)"},
+      {"self bond",
+       joined(0, 2) + owner + " " + owner + third.substr(sp2) + joined(3, lines.size()),
+       "Bonds.20.rst:3: particle " + owner + " is bonded to itself"},
+      {"unknown partner",
+       joined(0, 2) + owner + " 999999" + third.substr(sp2) + joined(3, lines.size()),
+       "Bonds.20.rst:3: partner 999999 is not a particle of the problem"},
+      {"dead flag 2",
+       joined(0, 2) + owner + " " + partner + " 2" + third.substr(sp2 + 2) +
+           joined(3, lines.size()),
+       "Bonds.20.rst:3: the dead flag is 2; it must be 0 or 1"},
+      {"another step", "# pdq bonds: step 10\n" + joined(1, lines.size()),
+       "Bonds.20.rst:1: not the bonds of step 20"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    if (c.text.empty())
+      fs::remove(dir + "/out/Bonds.20.rst");
+    else
+      writeFile(dir + "/out/Bonds.20.rst", c.text);
+    const auto r = runPdq(
+        {"run", sc, "-q", "--restart", "out/ParticleAlterAttrs.20.rst", "--out", "again"}, dir);
+    EXPECT_EQ(r.code, 1) << r.all();
+    EXPECT_THAT(r.err, HasSubstr(c.expected));
+    EXPECT_THAT(r.err, testing::Not(HasSubstr("minimum cell size")));
+    EXPECT_FALSE(fs::exists(dir + "/again")) << "something was written";
+  }
+  writeFile(dir + "/out/Bonds.20.rst", bonds);
+  const auto good = runPdq(
+      {"run", sc, "-q", "--restart", "out/ParticleAlterAttrs.20.rst", "--out", "again"}, dir);
+  EXPECT_EQ(good.code, 0) << good.all();
+  EXPECT_EQ(readFile(dir + "/again/ParticleAlterAttrs.40.rst"),
+            readFile(dir + "/out/ParticleAlterAttrs.40.rst"));
+}
