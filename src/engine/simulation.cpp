@@ -24,7 +24,13 @@ Simulation::Simulation(std::unique_ptr<Model> model, ParticleSet particles, RunC
 
 Simulation::~Simulation() = default;
 
-void Simulation::addOutput(std::unique_ptr<Output> out) { outputs_.push_back(std::move(out)); }
+void Simulation::addOutput(std::unique_ptr<Output> out) {
+  if (setUp_) {  // added after setup (a strength trial's): it begins at the current step
+    OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
+    out->begin(oc, resumed_);
+  }
+  outputs_.push_back(std::move(out));
+}
 
 Domain Simulation::makeDomain() const {
   const Schema schema = model_->schema();
