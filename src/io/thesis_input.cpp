@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "engine/atomic_file.hpp"
 #include "engine/error.hpp"
@@ -124,7 +125,12 @@ Problem readThesisInput(const std::string& dir) {
   Params engine("pdQInput.dat");
   readKeyValues(input, lines, k, engine);
   pb.run.margin = engine.number("margin", -1);
-  pb.run.dim = static_cast<int>(engine.integer("dimension", 0));
+  const long dim = engine.integer("dimension", 0);
+  if (dim < 0 || dim > 3)
+    throw InputError(
+        input, engine.raw("dimension")->line,
+        "dimension must be 1, 2 or 3 (or 0: from the particles), not " + std::to_string(dim));
+  pb.run.dim = static_cast<int>(dim);
   if (engine.has("periodic")) {
     const auto f = engine.numbers("periodic");
     if (f.size() != 3)
@@ -138,9 +144,16 @@ Problem readThesisInput(const std::string& dir) {
   }
   pb.output.restartEvery = engine.integer("restart_every", 0);
   pb.output.historyEvery = engine.integer("history_every", 0);
+  const int idsLine = engine.has("history_ids") ? engine.raw("history_ids")->line : 0;
   if (engine.has("history_ids"))
-    for (double v : engine.numbers("history_ids"))
+    for (double v : engine.numbers("history_ids")) {
+      if (!(v >= 0 && v <= 9.0e15) || v != static_cast<double>(static_cast<Gid>(v)))
+        throw InputError(input, idsLine,
+                         "history_ids: " + numberText(v) +
+                             " is not a particle's ID (a whole "
+                             "number >= 0)");
       pb.output.historyIds.push_back(static_cast<Gid>(v));
+    }
   pb.output.globalsEvery = engine.integer("globals_every", 0);
   pb.run.loading = readLoading(engine);
   if ((pb.run.steps < 0) != engine.has("hold_time"))
@@ -164,6 +177,13 @@ Problem readThesisInput(const std::string& dir) {
                          "; neighbours would be missed");
   pb.particles = readParticleFiles(dir + "/ParticleFixedAttrs.dat", dir + "/ParticleAlterAttrs.dat",
                                    pb.model->schema());
+  if (!pb.output.historyIds.empty()) {
+    const std::unordered_set<Gid> ids(pb.particles.gid.begin(), pb.particles.gid.end());
+    for (Gid g : pb.output.historyIds)
+      if (!ids.count(g))
+        throw InputError(input, idsLine,
+                         "history_ids: " + std::to_string(g) + " is not a particle's ID");
+  }
   return pb;
 }
 

@@ -107,7 +107,21 @@ TEST(CliBadInput, ThesisFilesNameFileAndLine) {
     std::function<void()> spoil;
     std::string expected;
   };
-  const std::vector<DatCase> datCases = {
+  // The line of pdQInput.dat that holds history_ids, and the line after the last.
+  const auto idsAt = input.find("history_ids");
+  ASSERT_NE(idsAt, std::string::npos) << input;
+  const std::string idsLine =
+      std::to_string(std::count(input.begin(), input.begin() + idsAt, '\n') + 1);
+  const std::string endLine = std::to_string(std::count(input.begin(), input.end(), '\n') + 1);
+  auto appendLine = [&](const std::string& l) {
+    writeFile(dir + "/dat/pdQInput.dat", readFile(dir + "/dat/pdQInput.dat") + l + "\n");
+  };
+  auto ids = [&](const std::string& v) {
+    return DatCase{"history_ids",
+                   [&, v] { edit(dir + "/dat/pdQInput.dat", "history_ids 0", "history_ids " + v); },
+                   "pdQInput.dat:" + idsLine + ": history_ids: " + v + " is not a particle's ID"};
+  };
+  std::vector<DatCase> datCases = {
       {"unknown parameter", [&] { edit(dir + "/dat/pdQUserInput.dat", "dt ", "dT "); },
        "pdQUserInput.dat:3: unknown parameter 'dT'"},
       {"unknown model", [&] { edit(dir + "/dat/pdQUserInput.dat", "spring", "sprin"); },
@@ -119,6 +133,13 @@ TEST(CliBadInput, ThesisFilesNameFileAndLine) {
       {"missing file", [&] { fs::remove(dir + "/dat/ParticleAlterAttrs.dat"); },
        "ParticleAlterAttrs.dat: cannot open the file"},
   };
+  for (const char* d : {"4", "7", "-1"})
+    datCases.push_back({"dimension", [&, d] { appendLine(std::string("dimension ") + d); },
+                        "pdQInput.dat:" + endLine +
+                            ": dimension must be 1, 2 or 3 (or 0: from "
+                            "the particles), not " +
+                            d});
+  for (const char* v : {"99999", "-3", "1e+30", "1800.5"}) datCases.push_back(ids(v));
   for (const auto& c : datCases) {
     SCOPED_TRACE(c.name);
     writeFile(dir + "/dat/pdQInput.dat", input);
