@@ -12,8 +12,6 @@ namespace pdq::cli {
 void prepCommand(const PrepOptions& o) {
   Comm comm;
   Scenario sc = readScenario(o.input);
-  // pdQInput.dat always states the cell size: the scenario's default is the model's own.
-  if (sc.problem.run.minCellSize <= 0) sc.problem.run.minCellSize = sc.problem.model->minCellSize();
   if (comm.root()) {
     writeThesisInput(o.out, sc.problem, sc.modelParams);
     std::printf(

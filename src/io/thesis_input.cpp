@@ -156,8 +156,10 @@ Problem readThesisInput(const std::string& dir) {
     }
   pb.output.globalsEvery = engine.integer("globals_every", 0);
   pb.run.loading = readLoading(engine);
-  if ((pb.run.steps < 0) != engine.has("hold_time"))
-    throw InputError(input, lastLine,
+  if (pb.run.steps < 0 && !engine.has("hold_time"))
+    throw InputError(input, lastLine, "-1 time steps needs hold_time (the run's length)");
+  if (pb.run.steps >= 0 && engine.has("hold_time"))
+    throw InputError(input, engine.raw("hold_time")->line,
                      "give the run's length as the number of steps or as hold_time (with steps "
                      "-1), not both");
   engine.checkAllUsed();
@@ -208,10 +210,12 @@ void writeParticleFiles(const std::string& dir, const ParticleSet& ps, const Sch
 
 void writeThesisInput(const std::string& dir, const Problem& pb, const Params& modelParams) {
   std::filesystem::create_directories(dir);
+  // pdQInput.dat always states the cell size: a problem's default is the model's own.
+  const double cellSize = pb.run.minCellSize > 0 ? pb.run.minCellSize : pb.model->minCellSize();
   std::ostringstream in;
   in << pb.run.procs[0] << " " << pb.run.procs[1] << " " << pb.run.procs[2]
      << "   # nPX nPY nPZ (0: automatic)\n"
-     << numberText(pb.run.minCellSize) << "   # minimum cell size\n"
+     << numberText(cellSize) << "   # minimum cell size\n"
      << pb.run.steps << "   # number of time steps\n";
   if (pb.run.margin >= 0) in << "margin " << numberText(pb.run.margin) << "\n";
   if (pb.run.dim) in << "dimension " << pb.run.dim << "\n";

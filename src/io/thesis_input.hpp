@@ -1,9 +1,11 @@
 #pragma once
 // The thesis's input files (appendix A.2), kept readable and writable:
 //   pdQInput.dat        nPX nPY nPZ, minimum cell size, number of time steps (five numbers,
-//                       free format), then optional engine settings as `key value...` lines:
-//                       margin, dimension, periodic (3 flags), box_lo, box_hi (3 numbers each),
-//                       restart_every, history_every, history_ids, globals_every
+//                       free format; -1 steps: as long as ramp_time + hold_time), then
+//                       optional engine settings as `key value...` lines: margin, dimension,
+//                       periodic (3 flags), box_lo, box_hi (3 numbers each), restart_every,
+//                       history_every, history_ids, globals_every and the load protocol's
+//                       load_scale, ramp_time, hold_time, hold_damping_ratio
 //   pdQUserInput.dat    `model NAME`, then the model's parameters as `key value...` lines
 //   ParticleFixedAttrs.dat  per record: global ID, reference x y z, the model's fixed attributes
 //   ParticleAlterAttrs.dat  per record: global ID, current x y z, the model's alterable ones
@@ -12,8 +14,8 @@
 #include <string>
 
 #include "engine/particle_set.hpp"
-#include "engine/schema.hpp"
 #include "engine/problem.hpp"
+#include "engine/schema.hpp"
 
 namespace pdq {
 
@@ -25,7 +27,8 @@ Problem readThesisInput(const std::string& dir);
 ParticleSet readParticleFiles(const std::string& fixedPath, const std::string& alterPath,
                               const Schema& schema);
 
-// Writes a problem as the thesis's four files in `dir` (what `pdq prep` does).
+// Writes a problem as the thesis's four files in `dir` (what `pdq prep` does); without a
+// minimum cell size of its own, pdQInput.dat gets the model's.
 void writeThesisInput(const std::string& dir, const Problem& problem, const Params& modelParams);
 void writeParticleFiles(const std::string& dir, const ParticleSet& particles, const Schema& schema);
 

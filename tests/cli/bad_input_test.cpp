@@ -1,5 +1,5 @@
-// Bad input (issue 2, item 11): each case must stop before step 0 with a message naming
-// the file and line and the problem, exit with code 1, and leave no output behind.
+// Bad input: each case must stop before step 0 with a message naming the file and line and
+// the problem, exit with code 1, and leave no output behind.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -76,6 +76,11 @@ const std::vector<Case> cases = {
      "lattice.toml:39: history_ids: 128 is not a particle's ID"},
     {"missing steps", [](auto d) { edit(d + "/lattice.toml", "steps = 40", "stepz = 40"); },
      "lattice.toml: missing steps"},
+    {"steps and hold_time",
+     [](auto d) {
+       edit(d + "/lattice.toml", "steps = 40\n", "steps = 40\n[loading]\nhold_time = 2\n");
+     },
+     "lattice.toml:2: give the run's length as steps = N or as [loading] hold_time, not both"},
 };
 
 }  // namespace
