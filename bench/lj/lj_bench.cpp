@@ -32,16 +32,13 @@ int main(int argc, char** argv) {
   p.set("dt", "0.005");
   p.set("shift", "energy");
   pdq::Problem pb = pdq::makeProblem("lj", p, {});
-  const pdq::Schema schema = pb.model->schema();
   pdq::ParticleSet& ps = pb.particles;
-  ps.nFixed = schema.nFixed();
-  ps.nAlter = schema.nAlter();
   pdq::FccSpec spec;
   spec.cells = {cells, cells, cells};
   spec.density = 0.8442;
   spec.temperature = 1.44;
   spec.seed = 87287;
-  spec.velocityColumn = schema.alterIndex("vx");
+  spec.velocityColumn = pb.model->schema().alterIndex("vx");
   const pdq::FccBox box = pdq::makeFcc(spec, ps);
   const double atoms = static_cast<double>(ps.size());
 

@@ -22,12 +22,8 @@ int main(int argc, char** argv) {
   pdq::Params p("bench");
   p.set("critical_stretch", "0.01");
   pdq::Problem pb = pdq::makeProblem("spring", p, {});
-  const pdq::Schema s = pb.model->schema();
-  pdq::ParticleSet& ps = pb.particles;
-  ps.nFixed = s.nFixed();
-  ps.nAlter = s.nAlter();
   for (int j = 0; j < ny; ++j)
-    for (int i = 0; i < nx; ++i) ps.add(static_cast<pdq::Gid>(j) * nx + i, i, j, 0);
+    for (int i = 0; i < nx; ++i) pb.particles.add(static_cast<pdq::Gid>(j) * nx + i, i, j, 0);
   pb.run.outDir = dir;
   const auto simulation = pdq::makeSimulation(std::move(pb), comm);
   pdq::Simulation& sim = *simulation;

@@ -9,6 +9,11 @@ Problem makeProblem(const std::string& modelName, const Params& params, Particle
   pb.modelName = modelName;
   pb.model = ModelRegistry::create(modelName, params);
   pb.particles = std::move(particles);
+  if (pb.particles.size() == 0) {
+    const Schema schema = pb.model->schema();
+    pb.particles.nFixed = schema.nFixed();
+    pb.particles.nAlter = schema.nAlter();
+  }
   pb.run = std::move(run);
   pb.output.finalRestart = false;
   return pb;

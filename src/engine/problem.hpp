@@ -37,7 +37,8 @@ struct Problem {
 };
 
 // Model `modelName` created and configured with `params` (every one of which it must read),
-// on `particles`, with no outputs unless asked for.
+// on `particles`, with no outputs unless asked for. Empty `particles` get the model's
+// attribute widths, for the caller to fill.
 Problem makeProblem(const std::string& modelName, const Params& params, ParticleSet particles,
                     RunConfig run = {});
 

@@ -8,6 +8,7 @@
 //       found and evaluated.
 // A model is tested by registering it and describing a small problem for it below; a model
 // without one fails the suite.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <mpi.h>
 #include <omp.h>
@@ -55,21 +56,19 @@ Declared problem(std::string scenario, double displace, double turn = 0) {
   return d;
 }
 
+// A [particles] table of an nx × ny × nz block generator.
+std::string block(const std::string& generator, int nx, int ny, int nz) {
+  return fmt::format("[particles]\ngenerator = \"{}\"\nnx = {}\nny = {}\nnz = {}\n", generator, nx,
+                     ny, nz);
+}
+
 const std::map<std::string, Declared>& declared() {
   static const std::map<std::string, Declared> problems = [] {
     std::map<std::string, Declared> d;
-    d["spring"] = problem(R"([model]
-name = "spring"
-horizon = 1.5
-dt = 0.05
-critical_stretch = 0.2
-[particles]
-generator = "cubic"
-nx = 5
-ny = 4
-nz = 4
-)",
-                          0.05);
+    d["spring"] =
+        problem("[model]\nname = \"spring\"\nhorizon = 1.5\ndt = 0.05\ncritical_stretch = 0.2\n" +
+                    block("cubic", 5, 4, 4),
+                0.05);
     d["lj"] = problem(R"([model]
 name = "lj"
 dt = 0.002
@@ -79,20 +78,9 @@ cells = [3, 3, 3]
 density = 0.8442
 )",
                       0.04);
-    const std::string peri = R"(E = 1.0e9
-horizon = 2.1
-density = 1000
-dt = 1.0e-5
-critical_stretch = 0.5
-[particles]
-generator = "cubic"
-nx = 5
-ny = 5
-nz = 4
-[[particles.set]]
-attribute = "volume"
-value = 1.0
-)";
+    const std::string peri =
+        "E = 1.0e9\nhorizon = 2.1\ndensity = 1000\ndt = 1.0e-5\ncritical_stretch = 0.5\n" +
+        block("cubic", 5, 5, 4) + "[[particles.set]]\nattribute = \"volume\"\nvalue = 1.0\n";
     auto periMass = [](const Particles& P, std::size_t i) {
       return 1000 * P.fixed(i)[P.schema().fixedIndex("volume")];
     };
@@ -117,16 +105,8 @@ bar_centroid = 0.02
 )",
                           2e-5, 2e-4);
     d["mplm2d"].moment = "mz";
-    d["morse"] = problem(R"([model]
-name = "morse"
-cutoff = 1.8
-[particles]
-generator = "morse_block"
-nx = 4
-ny = 4
-nz = 3
-spacing = 0.97
-)",
+    d["morse"] = problem("[model]\nname = \"morse\"\ncutoff = 1.8\n" +
+                             block("morse_block", 4, 4, 3) + "spacing = 0.97\n",
                          0.03);
     // fcc at nearest-neighbour distance s = 0.02: density 4 / (s √2)³.
     d["mplm3d"] = problem(R"([model]

@@ -63,31 +63,30 @@ TEST(ThesisFiles, RoundTrip) {
 
 TEST(ThesisFiles, BadInputNamesFileAndLine) {
   const std::string fixed = kDir + "/ParticleFixedAttrs.dat",
-                    alter = kDir + "/ParticleAlterAttrs.dat";
-  writeSpringSet();
-  replaceLine(fixed, 3, "2 0.5 0.0x 0");
-  expectError(fixed, 3, "'0.0x' is not a number");
-  writeSpringSet();
-  replaceLine(fixed, 3, "2 0.5 0.0");
-  expectError(fixed, 3, "expected 4 numbers (id X Y Z), found 3");
-  writeSpringSet();
-  replaceLine(fixed, 4, "1 1.0 0 0");
-  expectError(fixed, 4, "duplicate global ID 1");
-  writeSpringSet();
-  replaceLine(alter, 2, "1 nan 0 0 0 0 0");
-  expectError(alter, 2, "'nan' is not a finite number");
-  writeSpringSet();
-  replaceLine(alter, 2, "1 inf 0 0 0 0 0");
-  expectError(alter, 2, "not a finite number");
-  writeSpringSet();
-  replaceLine(kDir + "/pdQUserInput.dat", 1, "model sprong");
-  expectError(kDir + "/pdQUserInput.dat", 1, "did you mean 'spring'");
-  writeSpringSet();
-  replaceLine(kDir + "/pdQUserInput.dat", 2, "horizn 1.5");
-  expectError(kDir + "/pdQUserInput.dat", 2, "unknown parameter 'horizn'");
-  writeSpringSet();
-  replaceLine(kDir + "/pdQInput.dat", 2, "abc   # minimum cell size");
-  expectError(kDir + "/pdQInput.dat", 2, "'abc' is not a number");
+                    alter = kDir + "/ParticleAlterAttrs.dat", user = kDir + "/pdQUserInput.dat",
+                    input = kDir + "/pdQInput.dat";
+  struct Bad {
+    std::string file;
+    int line;
+    std::string text, words;  // the line's new text, the message's words
+  };
+  const std::vector<Bad> cases = {
+      {fixed, 3, "2 0.5 0.0x 0", "'0.0x' is not a number"},
+      {fixed, 3, "2 0.5 0.0", "expected 4 numbers (id X Y Z), found 3"},
+      {fixed, 4, "1 1.0 0 0", "duplicate global ID 1"},
+      {alter, 2, "1 nan 0 0 0 0 0", "'nan' is not a finite number"},
+      {alter, 2, "1 inf 0 0 0 0 0", "not a finite number"},
+      {user, 1, "model sprong", "did you mean 'spring'"},
+      {user, 2, "horizn 1.5", "unknown parameter 'horizn'"},
+      {input, 2, "abc   # minimum cell size", "'abc' is not a number"},
+      {input, 3, "-1   # number of time steps", "-1 time steps needs hold_time"},
+      {input, 4, "hold_time 2", "as the number of steps or as hold_time (with steps -1), not both"},
+  };
+  for (const Bad& c : cases) {
+    writeSpringSet();
+    replaceLine(c.file, c.line, c.text);
+    expectError(c.file, c.line, c.words);
+  }
   writeSpringSet();
   std::filesystem::remove(alter);
   expectError(alter, 0, "cannot open");

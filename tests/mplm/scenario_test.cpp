@@ -2,13 +2,13 @@
 // supports, bearings and displacement control set by [[particles.set]] act as they should.
 #include "scenario/scenario.hpp"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "engine/error.hpp"
 #include "engine/simulation.hpp"
@@ -32,6 +32,42 @@ std::unique_ptr<Simulation> simulation(Scenario& sc, Comm& comm) {
   return makeSimulation(std::move(sc.problem), comm);
 }
 
+// An undamaged, damped plate 0.2 m wide and `height` high (loading = "none") for `steps`
+// steps: its bottom row has constraint `bottom`, the corner at X = 0 has X held too
+// (bottom | 1); then the [[particles.set]] entries `sets`; the rows with Y in `monitored`
+// are monitored; `loading` is its [loading] table.
+std::string supportedPlate(long steps, double height, int bottom, const std::string& monitored,
+                           const std::string& sets, const std::string& loading = "") {
+  return fmt::format(R"(steps = {}
+[model]
+name = "mplm2d"
+damage = false
+viscous_damping = 20000
+{}[particles]
+generator = "mplm_plate"
+width = 0.2
+height = {}
+loading = "none"
+[[particles.set]]
+attribute = "constraint"
+value = {}
+y = [-0.001, 0.001]
+[[particles.set]]
+attribute = "constraint"
+value = {}
+x = [-0.001, 0.001]
+y = [-0.001, 0.001]
+{}[[particles.set]]
+attribute = "monitor"
+value = 0
+[[particles.set]]
+attribute = "monitor"
+value = 1
+y = {}
+)",
+                     steps, loading, height, bottom, bottom | 1, sets, monitored);
+}
+
 TEST(MplmScenarios, SpacingMustMatchTheLattice) {
   Scenario sc = scenarioFrom("mplm_spacing/bad.toml",
                              "steps = 1\n[model]\nname = \"mplm2d\"\n[particles]\n"
@@ -53,26 +89,8 @@ TEST(MplmScenarios, SpacingMustMatchTheLattice) {
 // (an effective width of 10 s), within the lattice's free-edge effect.
 TEST(MplmScenarios, SupportsAndDisplacementControlFromTheScenario) {
   const double s = 0.02, pitch = std::sqrt(3.0) / 2 * s, top = 11 * pitch, u = 1e-5;
-  Scenario sc = scenarioFrom("mplm_displacement/pull.toml", R"(steps = 8000
-[model]
-name = "mplm2d"
-damage = false
-viscous_damping = 20000
-[particles]
-generator = "mplm_plate"
-width = 0.2
-height = 0.2
-loading = "none"
-[[particles.set]]
-attribute = "constraint"
-value = 2
-y = [-0.001, 0.001]
-[[particles.set]]
-attribute = "constraint"
-value = 3
-x = [-0.001, 0.001]
-y = [-0.001, 0.001]
-[[particles.set]]
+  Scenario sc = scenarioFrom("mplm_displacement/pull.toml",
+                             supportedPlate(8000, 0.2, 2, "[0.19, 0.2]", R"([[particles.set]]
 attribute = "constraint"
 value = 2
 y = [0.19, 0.2]
@@ -80,14 +98,7 @@ y = [0.19, 0.2]
 attribute = "disp_y"
 value = 1e-5
 y = [0.19, 0.2]
-[[particles.set]]
-attribute = "monitor"
-value = 0
-[[particles.set]]
-attribute = "monitor"
-value = 1
-y = [0.19, 0.2]
-)");
+)"));
   Comm comm;
   auto simPtr = simulation(sc, comm);
   Simulation& sim = *simPtr;
@@ -105,42 +116,11 @@ y = [0.19, 0.2]
 TEST(MplmScenarios, BearingsPushButNeverPull) {
   for (double load : {-100.0, 100.0}) {
     SCOPED_TRACE(load);
-    std::ostringstream text;
-    text << R"(steps = 6000
-[model]
-name = "mplm2d"
-damage = false
-viscous_damping = 20000
-[loading]
-ramp_time = 0.004
-[particles]
-generator = "mplm_plate"
-width = 0.2
-height = 0.1
-loading = "none"
-[[particles.set]]
-attribute = "constraint"
-value = 8
-y = [-0.001, 0.001]
-[[particles.set]]
-attribute = "constraint"
-value = 9
-x = [-0.001, 0.001]
-y = [-0.001, 0.001]
-[[particles.set]]
-attribute = "load_y"
-value = )"
-         << load << R"(
-y = [0.08, 0.1]
-[[particles.set]]
-attribute = "monitor"
-value = 0
-[[particles.set]]
-attribute = "monitor"
-value = 1
-y = [-0.001, 0.001]
-)";
-    Scenario sc = scenarioFrom("mplm_bearing/rest.toml", text.str());
+    const std::string sets = fmt::format(
+        "[[particles.set]]\nattribute = \"load_y\"\nvalue = {}\ny = [0.08, 0.1]\n", load);
+    Scenario sc = scenarioFrom(
+        "mplm_bearing/rest.toml",
+        supportedPlate(6000, 0.1, 8, "[-0.001, 0.001]", sets, "[loading]\nramp_time = 0.004\n"));
     double total = 0;
     const ParticleSet& ps = sc.problem.particles;
     for (std::size_t k = 0; k < ps.size(); ++k) total += ps.fixedRow(k)[LOAD_Y];

@@ -21,6 +21,7 @@ struct Problem {
   Params params{"test"};
   ParticleSet ps;
   Schema schema;
+  RunConfig run{};
   int col(const std::string& fixedName) const { return schema.fixedIndex(fixedName); }
   int acol(const std::string& alterName) const { return schema.alterIndex(alterName); }
 };
@@ -43,8 +44,17 @@ inline Problem latticeProblem(const std::string& model,
   return pb;
 }
 
-inline std::unique_ptr<Simulation> makeSimulation(Problem pb, RunConfig cfg, Comm& comm) {
-  return pdq::makeSimulation(pdq::makeProblem(pb.model, pb.params, std::move(pb.ps), cfg), comm);
+inline std::unique_ptr<Simulation> makeSimulation(Problem pb, Comm& comm) {
+  return pdq::makeSimulation(
+      pdq::makeProblem(pb.model, pb.params, std::move(pb.ps), std::move(pb.run)), comm);
+}
+
+// ... running `steps` steps, its output folder `outDir`.
+inline std::unique_ptr<Simulation> makeSimulation(Problem pb, long steps, const std::string& outDir,
+                                                  Comm& comm) {
+  pb.run.steps = steps;
+  pb.run.outDir = outDir;
+  return makeSimulation(std::move(pb), comm);
 }
 
 // Every particle's alterable row, by ID, gathered on rank 0 (empty elsewhere).

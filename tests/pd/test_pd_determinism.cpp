@@ -39,9 +39,9 @@ State runOn(int ranks, std::array<int, 3> grid, int threads, Make make) {
   if (sub != MPI_COMM_NULL) {
     Comm comm(sub);
     omp_set_num_threads(threads);
-    auto [pb, cfg] = make();
-    cfg.procs = grid;
-    auto sim = makeSimulation(std::move(pb), cfg, comm);
+    Problem pb = make();
+    pb.run.procs = grid;
+    auto sim = makeSimulation(std::move(pb), comm);
     sim->run();
     out = gatherAlter(*sim);
     // Broken bonds count too: append each particle's number of intact bonds. Bond rows:
@@ -102,8 +102,9 @@ TEST(PdDeterminism, CantileverLps) {
     pb.model = c.model;
     pb.params = c.params;
     pb.ps = std::move(c.particles);
-    c.run.outDir = "pd_det_out";
-    return std::make_pair(std::move(pb), c.run);
+    pb.run = c.run;
+    pb.run.outDir = "pd_det_out";
+    return pb;
   });
 }
 
@@ -125,10 +126,9 @@ TEST(PdDeterminism, BreakingPmb3D) {
       pb.ps.alterRow(k)[vx] = 0.04 * (X[0] - 5.5) + 0.003 * X[1] * X[2];
       pb.ps.alterRow(k)[vx + 1] = 0.01 * std::sin(X[0]);
     }
-    RunConfig cfg;
-    cfg.steps = 40;
-    cfg.outDir = "pd_det_out";
-    return std::make_pair(std::move(pb), cfg);
+    pb.run.steps = 40;
+    pb.run.outDir = "pd_det_out";
+    return pb;
   });
   double broken = 0;
   for (auto& [id, row] : ref) broken += row.back();

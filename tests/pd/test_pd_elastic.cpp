@@ -37,10 +37,7 @@ void uniaxialStrain(const Material& mat) {
   const double eps = 1e-4;
   Problem pb = plate(mat, n, n, 0.1);
   for (std::size_t k = 0; k < pb.ps.size(); ++k) pb.ps.alterRow(k)[0] *= 1 + eps;
-  RunConfig cfg;
-  cfg.steps = 0;
-  cfg.outDir = "pd_elastic_out";
-  auto sim = makeSimulation(std::move(pb), cfg, comm);
+  auto sim = makeSimulation(std::move(pb), 0, "pd_elastic_out", comm);
   sim->setup();
   Particles& P = sim->particles();
   std::vector<double> w(P.owned());
@@ -74,15 +71,12 @@ void pWave(const Material& mat) {
     const double X = pb.ps.fixedRow(k)[0];
     pb.ps.alterRow(k)[0] += amp * std::exp(-std::pow((X - x0) / width, 2));
   }
-  RunConfig cfg;
-  cfg.periodic = {false, true, false};
-  cfg.boxLo = {0, -0.5, 0};
-  cfg.boxHi = {0, ny - 0.5, 0};
+  pb.run.periodic = {false, true, false};
+  pb.run.boxLo = {0, -0.5, 0};
+  pb.run.boxHi = {0, ny - 0.5, 0};
   // The left-running half, reflected at X = 0, stays left of x0 until c t = 2 x0 - 3 w.
   const long steps1 = 200, steps2 = 600;
-  cfg.steps = steps2;
-  cfg.outDir = "pd_wave_out";
-  auto sim = makeSimulation(std::move(pb), cfg, comm);
+  auto sim = makeSimulation(std::move(pb), steps2, "pd_wave_out", comm);
   sim->setup();
   Particles& P = sim->particles();
   auto centroid = [&] {
@@ -122,10 +116,8 @@ void cantilever(const Material& mat) {
     if (f[0] == nx - 1) f[pb.col("fy")] = F / ny;
   }
   const double theory = F * std::pow(L, 3) / (3 * E * I) + F * L / (5.0 / 6.0 * G * h);
-  RunConfig cfg;
-  cfg.steps = static_cast<long>(6 * 2 * 3.14159 / omega1 / dt);
-  cfg.outDir = "pd_cantilever_test_out";
-  auto sim = makeSimulation(std::move(pb), cfg, comm);
+  const long steps = static_cast<long>(6 * 2 * 3.14159 / omega1 / dt);
+  auto sim = makeSimulation(std::move(pb), steps, "pd_cantilever_test_out", comm);
   sim->run();
   Particles& P = sim->particles();
   // Deflection of the end's middle row.

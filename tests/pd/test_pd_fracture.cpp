@@ -30,10 +30,7 @@ void notchedPlate(const std::string& model) {
       pb.ps.alterRow(k)[pb.acol("vy")] = Y < 3 ? -speed : speed;
     }
   }
-  RunConfig cfg;
-  cfg.steps = 1400;
-  cfg.outDir = "pd_fracture_out";
-  auto sim = makeSimulation(std::move(pb), cfg, comm);
+  auto sim = makeSimulation(std::move(pb), 1400, "pd_fracture_out", comm);
   sim->run();
   Particles& P = sim->particles();
   Bonds& B = sim->bonds();

@@ -27,10 +27,7 @@ void checkGradient(const std::string& model, bool threeD, bool correction = fals
   std::uniform_real_distribution<double> u(-0.05, 0.05);
   for (std::size_t k = 0; k < pb.ps.size(); ++k)
     for (int a = 0; a < (threeD ? 3 : 2); ++a) pb.ps.alterRow(k)[a] += u(rng);
-  RunConfig cfg;
-  cfg.steps = 1;
-  cfg.outDir = "pd_gradient_out";
-  auto sim = makeSimulation(std::move(pb), cfg, comm);
+  auto sim = makeSimulation(std::move(pb), 1, "pd_gradient_out", comm);
   sim->setup();
   Context& ctx = sim->context();
   Particles& P = sim->particles();

@@ -24,10 +24,7 @@ inline std::unique_ptr<Simulation> springLattice(Comm& comm, int nx, int ny, lon
   p.set("dt", "0.05");
   p.set("horizon", "1.5");
   Problem pb = makeProblem("spring", p, {});
-  const Schema s = pb.model->schema();
   ParticleSet& ps = pb.particles;
-  ps.nFixed = s.nFixed();
-  ps.nAlter = s.nAlter();
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
       const std::size_t k = ps.add(j * nx + i, i, j, 0);
