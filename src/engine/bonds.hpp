@@ -46,6 +46,14 @@ class Bonds {
   void appendParticle(const Gid* partners, const double* attrs, const std::uint8_t* dead,
                       std::size_t n);
   const std::uint8_t* deadFlags(std::size_t b) const { return &dead_[b]; }
+  // Every bond's attributes and dead flag, to be put back by restore(): the quasi-static
+  // solver evaluates trial states whose damage it keeps only once they are in equilibrium.
+  struct Saved {
+    std::vector<double> attr;
+    std::vector<std::uint8_t> dead;
+  };
+  void save(Saved& s) const { s.attr = attr_, s.dead = dead_; }
+  void restore(const Saved& s) { attr_ = s.attr, dead_ = s.dead; }
   std::vector<std::int32_t>& partners() { return partner_; }
 
  private:

@@ -31,7 +31,8 @@ class Context {
   void setDt(double dt) { dt_ = dt; }
   // The load protocol (the scenario's [loading]) and its factor at the current time.
   const Loading& loading() const { return loading_; }
-  double loadFactor() const { return loading_.factor(time()); }
+  // (Quasi-static: the factor of the load step being relaxed, whatever the time.)
+  double loadFactor() const { return quasiStatic_ ? staticFactor_ : loading_.factor(time()); }
   // The engine's integrator, one step (the default Model::integrate).
   void integrate() { integrator_->step(*this); }
   const Integrator& integrator() const { return *integrator_; }
@@ -85,6 +86,7 @@ class Context {
   void setSteps(long s) { steps_ = s; }
   void setLoading(const Loading& l) { loading_ = l; }
   void setIntegrator(Integrator* i) { integrator_ = i; }
+  void setStaticFactor(double f) { quasiStatic_ = true, staticFactor_ = f; }
 
  private:
   ProcCube& cube_;
@@ -93,6 +95,8 @@ class Context {
   long step_ = 0, steps_ = 0;
   double dt_ = 0;
   Loading loading_;
+  bool quasiStatic_ = false;
+  double staticFactor_ = 0;
   Integrator* integrator_ = nullptr;
   std::string stopReason_;
   std::vector<std::string> warnings_;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "engine/context.hpp"
+#include "engine/error.hpp"
 #include "engine/model.hpp"
 
 namespace pdq {
@@ -71,6 +72,41 @@ std::string writeLoading(const Loading& l) {
   return out;
 }
 
+Solver readSolver(const Params& p, const std::string& kindKey) {
+  Solver s;
+  const std::string kind = p.choice(kindKey, "dynamic", {"dynamic", "quasi_static"});
+  s.quasiStatic = kind == "quasi_static";
+  if (const auto where = p.raw(kindKey)) s.line = where->line;
+  for (const char* key : {"tolerance", "max_iterations", "load_steps"})
+    if (!s.quasiStatic && p.has(key))
+      throw InputError(p.raw(key)->file, p.raw(key)->line,
+                       std::string(key) + " is a quasi-static solver parameter; set " + kindKey +
+                           " = quasi_static");
+  s.tolerance = p.number("tolerance", s.tolerance);
+  if (!(s.tolerance > 0))
+    throw InputError(p.raw("tolerance")->file, p.raw("tolerance")->line,
+                     "tolerance must be positive (the out-of-balance force relative to the "
+                     "applied load at which a load step has converged)");
+  s.maxIterations = p.integer("max_iterations", s.maxIterations);
+  if (s.maxIterations < 1)
+    throw InputError(p.raw("max_iterations")->file, p.raw("max_iterations")->line,
+                     "max_iterations must be at least 1 (iterations per load step)");
+  if (const auto r = p.raw("max_iterations")) s.line = r->line;
+  s.loadSteps = p.integer("load_steps", s.loadSteps);
+  if (s.loadSteps < 1)
+    throw InputError(p.raw("load_steps")->file, p.raw("load_steps")->line,
+                     "load_steps must be at least 1");
+  return s;
+}
+
+std::string writeSolver(const Solver& s) {
+  if (!s.quasiStatic) return "";
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "solver quasi_static\ntolerance %.17g\nmax_iterations %ld\n",
+                s.tolerance, s.maxIterations);
+  return std::string(buf) + "load_steps " + std::to_string(s.loadSteps) + "\n";
+}
+
 void Integrator::resolve(const Schema& s) {
   const Motion m = model_.motion();
   if (m.position.size() != m.velocity.size() || m.position.size() != m.force.size() ||
@@ -102,9 +138,36 @@ void Integrator::resolve(const Schema& s) {
   resolved_ = true;
 }
 
+std::vector<double> Integrator::state() const {
+  if (omega2_ < 0) return {holdDamping_};
+  return {holdDamping_, omega2_, iterations_};
+}
+
 void Integrator::setState(std::span<const double> s) {
-  if (s.size() != 1) throw std::logic_error("integrator state: one value expected");
+  if (s.size() != 1 && s.size() != 3)
+    throw std::logic_error("integrator state: one or three values expected");
   holdDamping_ = s[0];
+  if (s.size() == 3) omega2_ = s[1], iterations_ = s[2];
+}
+
+void Integrator::ensureBodies(Context& ctx) {
+  Particles& P = ctx.particles;
+  if (!resolved_) resolve(P.schema());
+  const std::size_t n = P.owned();
+  if (haveBodies_ && bodies_.size() == n) return;
+  bodies_.assign(n, Body{});
+  model_.bodies(ctx, bodies_);
+  for (const Body& b : bodies_)
+    for (int d = nT_; d < nT_ + nR_; ++d)
+      if (rotation_ == Rotation::Spatial && b.constraint[d] == Constraint::Resting)
+        throw std::logic_error("a spatial rotation cannot rest on a support");
+  haveBodies_ = true;
+}
+
+void Integrator::turn(Particles& P, std::size_t i, const double phi[3]) const {
+  double* a = P.alter(i);
+  double* q[4] = {&a[quat_[0]], &a[quat_[1]], &a[quat_[2]], &a[quat_[3]]};
+  rotate(q, phi);
 }
 
 // The displacement of DOF d of owned particle i from its reference (rotations: the angle,
@@ -146,17 +209,8 @@ double Integrator::rayleighDamping(Context& ctx, double factor) const {
 
 void Integrator::step(Context& ctx) {
   Particles& P = ctx.particles;
-  if (!resolved_) resolve(P.schema());
+  ensureBodies(ctx);
   const std::size_t n = P.owned();
-  if (!haveBodies_ || bodies_.size() != n) {
-    bodies_.assign(n, Body{});
-    model_.bodies(ctx, bodies_);
-    for (const Body& b : bodies_)
-      for (int d = nT_; d < nT_ + nR_; ++d)
-        if (rotation_ == Rotation::Spatial && b.constraint[d] == Constraint::Resting)
-          throw std::logic_error("a spatial rotation cannot rest on a support");
-    haveBodies_ = true;
-  }
   const Loading& L = ctx.loading();
   const double h = ctx.dt();
   // The first step of a run from step 0 starts from v(0): half a kick (velocity Verlet).

@@ -23,6 +23,7 @@
 // the held loads, computed once and saved in restart files).
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -56,6 +57,25 @@ struct Loading {
 // from the defaults, one "key value" line each (17 digits).
 Loading readLoading(const Params& p);
 std::string writeLoading(const Loading& l);
+
+// The solver: explicit dynamics (the default), or quasi-static loading by adaptive dynamic
+// relaxation (engine/relaxation.cpp): the loads × load_scale applied in `loadSteps` equal
+// increments, each relaxed to static equilibrium, i.e. until the out-of-balance force is
+// below `tolerance` × the applied load (or × the reactions when no load is applied).
+struct Solver {
+  bool quasiStatic = false;
+  double tolerance = 1e-6;
+  long maxIterations = 100000;  // per load step
+  long loadSteps = 1;
+  int line = 0;  // of max_iterations (or of the kind) in the run's input, for the error when a
+                 // load step does not converge in time
+};
+
+// The solver from the keys `kindKey` ("dynamic" or "quasi_static"), tolerance,
+// max_iterations, load_steps (the scenario's [solver] table with kindKey "kind", or
+// pdQInput.dat with kindKey "solver"); `writeSolver` gives the keys for pdQInput.dat.
+Solver readSolver(const Params& p, const std::string& kindKey);
+std::string writeSolver(const Solver& s);
 
 enum class Rotation { None, Planar, Spatial };
 
@@ -98,13 +118,36 @@ class Integrator {
   // The owned particles changed (a shuffle): bodies are asked for again before the next step.
   void particlesMoved() { haveBodies_ = false; }
   // State kept between steps, saved in restart files.
-  std::vector<double> state() const { return {holdDamping_}; }
+  std::vector<double> state() const;
   void setState(std::span<const double> s);
+
+  // Quasi-static: relaxes the owned particles to static equilibrium under the loads and
+  // prescribed values × `factor` (the previous load step's factor `previous`), by adaptive
+  // dynamic relaxation (engine/relaxation.cpp). `forces` evaluates the model's forces at the
+  // current state; `exchange` refreshes the ghosts after the particles moved; `source`
+  // names the run's input in errors.
+  struct Relaxed {
+    bool converged = true;
+    long iterations = 0;
+    double residual = 0, reference = 0;  // out-of-balance and applied (or reaction) norms
+    double load = 0, displacement = 0;   // |factor × loads| and the work-conjugate displacement
+  };
+  Relaxed relax(Context& ctx, const Solver& solver, const std::string& source, double factor,
+                double previous, const std::function<void()>& forces,
+                const std::function<void()>& exchange);
 
  private:
   void resolve(const Schema& schema);
+  void ensureBodies(Context& ctx);
   double displacement(const Particles& P, std::size_t i, int dof) const;
   double rayleighDamping(Context& ctx, double factor) const;
+  // Relaxation (relaxation.cpp): the fictitious mass scale from the highest frequency of
+  // the free degrees of freedom, and the force of DOF d of owned particle i in force units
+  // with the external load at `factor`.
+  double highestFrequencySquared(Context& ctx, const std::function<void()>& forces);
+  double dofForce(const Particles& P, std::size_t i, int d, double factor) const;
+  // Turns the spatial orientation of owned particle i by the rotation vector phi.
+  void turn(Particles& P, std::size_t i, const double phi[3]) const;
 
   Model& model_;
   bool resolved_ = false, haveBodies_ = false, perMass_ = false;
@@ -115,6 +158,10 @@ class Integrator {
   std::array<int, 4> quat_{};                 // orientation columns
   std::vector<Body> bodies_;
   double holdDamping_ = -1;  // 2 ζ_h ω₁ once computed
+  // Quasi-static: ω_max² of M⁻¹K (the fictitious masses' scale), computed once at the first
+  // load step, and the iterations done so far; both saved in restart files.
+  double omega2_ = -1;
+  double iterations_ = 0;
 };
 
 }  // namespace pdq

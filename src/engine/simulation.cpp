@@ -154,7 +154,20 @@ void Simulation::setup() {
   restart_.reset();
   cube_->halo();  // setup and prepare may have changed alterable attributes
   if (!(ctx_->dt() > 0)) throw InputError(cfg_.source, 0, "the model set no positive time step");
-  if (cfg_.steps < 0) {
+  if (cfg_.solver.quasiStatic) {
+    if (model_->shuffles())
+      throw InputError(cfg_.source, cfg_.solver.line,
+                       "the quasi-static solver needs a model whose particles keep their "
+                       "neighbours; this model's particles move between cells");
+    if (cfg_.steps < 0) cfg_.steps = cfg_.solver.loadSteps;
+    if (cfg_.steps > cfg_.solver.loadSteps)
+      throw InputError(cfg_.source, cfg_.solver.line,
+                       "the run asks for " + std::to_string(cfg_.steps) +
+                           " steps but the quasi-static solver has " +
+                           std::to_string(cfg_.solver.loadSteps) + " load steps");
+    ctx_->setSteps(cfg_.steps);
+    ctx_->setStaticFactor(staticFactor(step_));
+  } else if (cfg_.steps < 0) {
     // The run lasts the load protocol's ramp and hold (a duration within round-off of a
     // whole number of steps takes that number).
     const Loading& L = cfg_.loading;
@@ -189,9 +202,74 @@ void Simulation::setup() {
   writeOutputs(false);
 }
 
+double Simulation::staticFactor(long loadStep) const {
+  return cfg_.loading.scale * static_cast<double>(loadStep) /
+         static_cast<double>(cfg_.solver.loadSteps);
+}
+
+// Quasi-static: step k relaxes load step k (load factor scale × k / load_steps) to
+// equilibrium, logs its iterations and residual and adds its row to quasi_static.csv.
+bool Simulation::relaxLoadStep() {
+  ++step_;
+  ctx_->setStep(step_);
+  const double factor = staticFactor(step_);
+  ctx_->setStaticFactor(factor);
+  auto forces = [&] {
+    Timers::Scope t(timers_, Phase::Force);
+    model_->force(*ctx_);
+  };
+  auto exchange = [&] {
+    Timers::Scope t(timers_, Phase::Communication);
+    cube_->halo();
+  };
+  const Integrator::Relaxed r = integrator_->relax(*ctx_, cfg_.solver, cfg_.source, factor,
+                                                   staticFactor(step_ - 1), forces, exchange);
+  const double relative = r.reference > 0 ? r.residual / r.reference : 0.0;
+  if (comm_.root()) {
+    ctx_->log() << "load step " << step_ << ": load factor " << factor << ", " << r.iterations
+                << " iterations, residual " << r.residual << " (" << relative
+                << " of the applied load)" << (r.converged ? "" : ", not converged") << "\n";
+    if (loadSteps_.empty())
+      loadSteps_ =
+          "load_step,load_factor,iterations,residual,reference,relative,load,displacement\n";
+    std::ostringstream row;
+    row << step_ << "," << numberText(factor) << "," << r.iterations << ","
+        << numberText(r.residual) << "," << numberText(r.reference) << "," << numberText(relative)
+        << "," << numberText(r.load) << "," << numberText(r.displacement) << "\n";
+    loadSteps_ += row.str();
+    writeFileAtomically(cfg_.outDir + "/quasi_static.csv", loadSteps_);
+  }
+  if (!r.converged) {
+    std::ostringstream os;
+    os << "load step " << step_ << " (load factor " << factor << ") did not converge in "
+       << cfg_.solver.maxIterations << " iterations: the out-of-balance force is still " << relative
+       << " of the applied load (tolerance " << cfg_.solver.tolerance
+       << "); raise max_iterations or use more load_steps";
+    throw InputError(cfg_.source, cfg_.solver.line, os.str());
+  }
+  // A stop asked for from outside ends the run at this load step, as at a time step.
+  stopCode_ = stopCheck_ && step_ < cfg_.steps
+                  ? static_cast<int>(comm_.max(static_cast<double>(stopCheck_())))
+                  : 0;
+  const bool interrupted = stopCode_ > 0;
+  const bool stop = !ctx_->stopReason().empty();
+  if (stop) {
+    ended_ = true;
+    debug_ << "stopped at step " << step_ << ": " << ctx_->stopReason() << "\n";
+  }
+  if (interrupted) {
+    ended_ = true;
+    debug_ << "stopped early at load step " << step_ << " (stop code " << stopCode_
+           << "); restart files written\n";
+  }
+  writeOutputs(stop || step_ == cfg_.steps, interrupted);
+  return !ended_ && step_ < cfg_.steps;
+}
+
 bool Simulation::advance() {
   if (!setUp_) setup();
   if (ended_ || step_ >= cfg_.steps) return false;
+  if (cfg_.solver.quasiStatic) return relaxLoadStep();
   ++step_;
   ctx_->setStep(step_);
   {

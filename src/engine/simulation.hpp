@@ -34,6 +34,7 @@ struct RunConfig {
   long steps = 0;                          // < 0: as long as the load protocol's ramp and hold
   long firstStep = 0;                      // a restarted run continues from here
   Loading loading;                         // the load protocol
+  Solver solver;                           // dynamic, or quasi-static: a step is a load step
   std::string outDir = ".";
   std::string source = "input";  // file named in configuration errors
   // Check for instability (non-finite attributes or forces, a particle moving further
@@ -96,6 +97,8 @@ class Simulation {
   double firstUnstable() const;  // -(smallest unstable particle's ID) on this rank, or -inf
   [[noreturn]] void reportInstability(Gid id, const std::string& what);
   void writeLogs();  // debug.txt (appended) and timing.out (rewritten); collective
+  bool relaxLoadStep();
+  double staticFactor(long loadStep) const;
 
   std::unique_ptr<Model> model_;
   ParticleSet initial_;
@@ -121,6 +124,7 @@ class Simulation {
   std::function<int()> stopCheck_;
   int stopCode_ = 0;
   bool setUp_ = false, ended_ = false, resumed_ = false;
+  std::string loadSteps_;  // quasi_static.csv so far (rank 0)
 };
 
 }  // namespace pdq

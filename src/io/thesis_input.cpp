@@ -156,12 +156,28 @@ Problem readThesisInput(const std::string& dir) {
     }
   pb.output.globalsEvery = engine.integer("globals_every", 0);
   pb.run.loading = readLoading(engine);
-  if (pb.run.steps < 0 && !engine.has("hold_time"))
-    throw InputError(input, lastLine, "-1 time steps needs hold_time (the run's length)");
-  if (pb.run.steps >= 0 && engine.has("hold_time"))
-    throw InputError(input, engine.raw("hold_time")->line,
-                     "give the run's length as the number of steps or as hold_time (with steps "
-                     "-1), not both");
+  pb.run.solver = readSolver(engine, "solver");
+  if (pb.run.solver.quasiStatic) {
+    // The number of steps is the number of load steps.
+    for (const char* k : {"ramp_time", "hold_time", "hold_damping_ratio"})
+      if (engine.has(k))
+        throw InputError(input, engine.raw(k)->line,
+                         std::string(k) +
+                             " belongs to dynamic loading; the quasi-static solver applies "
+                             "load_scale in load_steps");
+    if (pb.run.steps != pb.run.solver.loadSteps)
+      throw InputError(input, lastLine,
+                       "with the quasi-static solver the number of steps is the number of "
+                       "load steps: give " +
+                           std::to_string(pb.run.solver.loadSteps) + " (load_steps)");
+  } else {
+    if (pb.run.steps < 0 && !engine.has("hold_time"))
+      throw InputError(input, lastLine, "-1 time steps needs hold_time (the run's length)");
+    if (pb.run.steps >= 0 && engine.has("hold_time"))
+      throw InputError(input, engine.raw("hold_time")->line,
+                       "give the run's length as the number of steps or as hold_time (with "
+                       "steps -1), not both");
+  }
   engine.checkAllUsed();
 
   // pdQUserInput.dat: the model and its parameters.
@@ -234,7 +250,7 @@ void writeThesisInput(const std::string& dir, const Problem& pb, const Params& m
     in << "\n";
   }
   if (pb.output.globalsEvery) in << "globals_every " << pb.output.globalsEvery << "\n";
-  in << writeLoading(pb.run.loading);
+  in << writeLoading(pb.run.loading) << writeSolver(pb.run.solver);
   writeFileAtomically(dir + "/pdQInput.dat", in.str());
   std::ostringstream user;
   user << "model " << pb.modelName << "\n";

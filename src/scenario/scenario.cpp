@@ -307,23 +307,43 @@ Scenario readScenario(const std::string& path) {
   pb.source = path;
   pb.run.source = path;
   Params top = tableParams(root, path, "the scenario");
-  for (const char* k : {"model", "particles", "decomposition", "output", "strength", "loading"})
+  for (const char* k :
+       {"model", "particles", "decomposition", "output", "strength", "loading", "solver"})
     top.accept(k);
   top.text("description", "");
   const toml::table* lt = subTable(root, "loading", path);
   const Params loading = lt ? tableParams(*lt, path, "[loading]") : Params("[loading]");
   pb.run.loading = readLoading(loading);
   loading.checkAllUsed();
-  if (!top.has("steps") && !loading.has("hold_time"))
+  const toml::table* st = subTable(root, "solver", path);
+  const Params solver = st ? tableParams(*st, path, "[solver]") : Params("[solver]");
+  pb.run.solver = readSolver(solver, "kind");
+  solver.checkAllUsed();
+  if (pb.run.solver.quasiStatic) {
+    // The run is its load steps; the load protocol's time plays no part.
+    for (const char* k : {"ramp_time", "hold_time", "hold_damping_ratio"})
+      if (loading.has(k))
+        throw InputError(path, loading.raw(k)->line,
+                         std::string(k) +
+                             " belongs to dynamic loading; the quasi-static solver applies "
+                             "load_scale in [solver] load_steps");
+    if (top.has("steps"))
+      throw InputError(path, top.raw("steps")->line,
+                       "the quasi-static solver's run is its [solver] load_steps; remove steps");
+    pb.run.steps = pb.run.solver.loadSteps;
+    top.checkAllUsed();
+  } else if (!top.has("steps") && !loading.has("hold_time"))
     throw InputError(path, 0,
                      "missing steps = N (the number of time steps; or [loading] hold_time)");
   if (top.has("steps") && loading.has("hold_time"))
     throw InputError(path, top.raw("steps")->line,
                      "give the run's length as steps = N or as [loading] hold_time, not both");
-  pb.run.steps = top.integer("steps", -1);
-  if (top.has("steps") && pb.run.steps < 0)
-    throw InputError(path, top.raw("steps")->line, "steps must be >= 0");
-  top.checkAllUsed();
+  if (!pb.run.solver.quasiStatic) {
+    pb.run.steps = top.integer("steps", -1);
+    if (top.has("steps") && pb.run.steps < 0)
+      throw InputError(path, top.raw("steps")->line, "steps must be >= 0");
+    top.checkAllUsed();
+  }
 
   readModel(root, path, sc);
   Generated g = readParticles(root, path, sc);

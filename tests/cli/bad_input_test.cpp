@@ -171,3 +171,55 @@ TEST(CliBadInput, MissingScenarioAndPlugin) {
   EXPECT_THAT(r.err, HasSubstr("not_a_library.so: cannot load plugin"));
   EXPECT_TRUE(filesUnder(dir) == std::vector<std::string>{"not_a_library.so"});
 }
+
+// The quasi-static solver's keys: each bad value names its file and line.
+TEST(CliBadInput, SolverKeysNameFileAndLine) {
+  const std::string scenario = R"([model]
+name = "mplm2d"
+[particles]
+generator = "mplm_plate"
+width = 0.1
+height = 0.12
+[solver]
+kind = "quasi_static"
+tolerance = 1e-6
+max_iterations = 100000
+load_steps = 2
+[output]
+dir = "out"
+)";
+  struct SolverCase {
+    const char* name;
+    std::string from, to, expected;
+    bool writesNothing = true;
+  };
+  const std::vector<SolverCase> solverCases = {
+      {"zero tolerance", "tolerance = 1e-6", "tolerance = 0",
+       "qs.toml:9: tolerance must be positive"},
+      {"negative tolerance", "tolerance = 1e-6", "tolerance = -1e-6",
+       "qs.toml:9: tolerance must be positive"},
+      {"unknown kind", "\"quasi_static\"", "\"quasistatic\"", "qs.toml:8: "},
+      {"no load steps", "load_steps = 2", "load_steps = 0",
+       "qs.toml:11: load_steps must be at least 1"},
+      {"steps with the quasi-static solver", "[model]", "steps = 10\n[model]",
+       "qs.toml:1: the quasi-static solver's run is its [solver] load_steps"},
+      {"quasi-static keys with the dynamic solver", "\"quasi_static\"", "\"dynamic\"",
+       "qs.toml:9: tolerance is a quasi-static solver parameter"},
+      {"too few iterations", "max_iterations = 100000", "max_iterations = 3",
+       "qs.toml:10: load step 1 (load factor 0.5) did not converge in 3 iterations", false},
+  };
+  for (const auto& c : solverCases) {
+    SCOPED_TRACE(c.name);
+    const std::string dir = freshDir("bad_input_solver");
+    std::string text = scenario;
+    const auto at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, c.from.size(), c.to);
+    writeFile(dir + "/qs.toml", text);
+    const auto r = runPdq({"run", "qs.toml"}, dir);
+    EXPECT_EQ(r.code, 1) << r.all();
+    EXPECT_THAT(r.err, HasSubstr(c.expected));
+    if (c.name == std::string("unknown kind")) EXPECT_THAT(r.err, HasSubstr("quasi_static"));
+    if (c.writesNothing) EXPECT_FALSE(fs::exists(dir + "/out"));
+  }
+}

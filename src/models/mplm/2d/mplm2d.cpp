@@ -13,11 +13,12 @@
 #include <sstream>
 
 #include "engine/error.hpp"
+#include "engine/frequency.hpp"
 #include "engine/model.hpp"
 #include "models/mplm/2d/attributes.hpp"
 #include "models/mplm/2d/interaction.hpp"
 #include "models/mplm/2d/parameters.hpp"
-#include "models/mplm/common/frequency.hpp"
+#include "models/mplm/common/time_step.hpp"
 
 namespace pdq::mplm {
 namespace {
@@ -347,7 +348,7 @@ class Mplm2d final : public Model {
         f[3 * i + 2] = m;
       }
     };
-    return mplm::highestFrequency(ctx, sys, restoring, par_.powerIterations);
+    return pdq::highestFrequency(ctx, sys, restoring, par_.powerIterations);
   }
 
   // Where the badly damaged (ω ≥ ½) concrete interactions are: mostly compressive →

@@ -16,13 +16,14 @@
 
 #include "engine/error.hpp"
 #include "engine/exact_sum.hpp"
+#include "engine/frequency.hpp"
 #include "engine/model.hpp"
 #include "models/mplm/3d/attributes.hpp"
 #include "models/mplm/3d/elastic_constants.hpp"
 #include "models/mplm/3d/interaction.hpp"
-#include "models/mplm/common/frequency.hpp"
 #include "models/mplm/common/interactions.hpp"
 #include "models/mplm/common/parameters.hpp"
+#include "models/mplm/common/time_step.hpp"
 
 namespace pdq::mplm3d {
 namespace {
@@ -100,7 +101,7 @@ class Mplm3d final : public Model {
     // Leapfrog with damping γ is stable for Δt < (2/ω)(√(1+ζ²) − ζ), ζ = γ/(2ω); the bound
     // takes the highest frequency and the largest damping together.
     const double zm = ctx.max(gamma) / (2 * omegaMax_);
-    const double stable = mplm::stableStep(omegaMax_, zm);
+    const double stable = pdq::stableStep(omegaMax_, zm);
     if (!(par_.dt > 0)) ctx.setDt(par_.dtSafety * stable);
     mplm::reportTimeStep(ctx, "mplm3d", omegaMax_, stable, thesisDt);
   }
@@ -420,7 +421,7 @@ class Mplm3d final : public Model {
   // ω_max of the undamaged lattice in small deformation, six DOFs per particle.
   double highestFrequency(Context& ctx) const {
     const std::size_t n = ctx.particles.owned();
-    mplm::DofSystem sys;
+    pdq::DofSystem sys;
     sys.dofs = 6;
     sys.mass.resize(6 * n);
     sys.held.resize(6 * n);
@@ -447,7 +448,7 @@ class Mplm3d final : public Model {
         std::copy_n(sum, 6, &f[6 * i]);
       }
     };
-    return mplm::highestFrequency(ctx, sys, restoring, par_.powerIterations);
+    return pdq::highestFrequency(ctx, sys, restoring, par_.powerIterations);
   }
 
   // 2 ζ_h ω₁, ω₁² = F·u / (u·M·u) the Rayleigh quotient of the current deflection under

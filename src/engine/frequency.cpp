@@ -1,12 +1,10 @@
-#include "models/mplm/common/frequency.hpp"
+#include "engine/frequency.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <iomanip>
-#include <sstream>
 
-namespace pdq::mplm {
+namespace pdq {
 namespace {
 
 // A start vector that depends only on the particle's global ID and the DOF, so every
@@ -55,20 +53,4 @@ double highestFrequency(Context& ctx, const DofSystem& sys, const RestoringForce
   return std::sqrt(std::max(lambda, 0.0));
 }
 
-void reportTimeStep(Context& ctx, const char* model, double omegaMax, double stable,
-                    double thesisDt) {
-  if (ctx.root())
-    ctx.log() << std::setprecision(4) << model << ": highest frequency " << omegaMax
-              << " rad/s, stable dt " << stable << " s, s/(pi c0) = " << thesisDt << " s, using dt "
-              << ctx.dt() << " s\n";
-  if (ctx.dt() > stable) {
-    std::ostringstream os;
-    os << std::setprecision(4) << model << ": dt = " << ctx.dt()
-       << " s exceeds the stable time step " << stable
-       << " s: the run will blow up; lower dt, or leave it out to use dt_safety x the stable "
-          "step";
-    ctx.warn(os.str());
-  }
-}
-
-}  // namespace pdq::mplm
+}  // namespace pdq

@@ -1,7 +1,8 @@
 #pragma once
-// The highest natural frequency of an undamaged, undamped lattice with `dofs` degrees of
-// freedom per particle, by power iteration on M^(−½) K M^(−½), and the stable time step
-// it sets (thesis §4.3.3). The lattice enters only through the product with its stiffness.
+// The highest natural frequency of a lattice with `dofs` degrees of freedom per particle,
+// by power iteration on M^(−½) K M^(−½), and the stable time step it sets (thesis §4.3.3).
+// The lattice enters only through the product with its stiffness: the MPLM gives it
+// analytically, the quasi-static solver by finite differences of any model's forces.
 #include <cmath>
 #include <functional>
 #include <span>
@@ -9,7 +10,7 @@
 
 #include "engine/context.hpp"
 
-namespace pdq::mplm {
+namespace pdq {
 
 struct DofSystem {
   int dofs = 0;
@@ -33,9 +34,4 @@ inline double stableStep(double omegaMax, double zeta) {
   return 2 / omegaMax * (std::sqrt(1 + zeta * zeta) - zeta);
 }
 
-// Logs the frequency and the steps, and warns (on standard error through the pdq command)
-// when the time step in use exceeds the stable one.
-void reportTimeStep(Context& ctx, const char* model, double omegaMax, double stable,
-                    double thesisDt);
-
-}  // namespace pdq::mplm
+}  // namespace pdq

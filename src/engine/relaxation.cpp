@@ -1,0 +1,257 @@
+// Quasi-static loading by adaptive dynamic relaxation (Underwood 1983; Kilic & Madenci 2010
+// for peridynamics), built on the integrator's degrees of freedom, bodies and constraints.
+// Fictitious dynamics with time step 1 and a diagonal fictitious mass per DOF,
+//     v(n+½) = ((2 − c) v(n−½) + 2 Λ⁻¹ F(n)) / (2 + c),   x(n+1) = x(n) + v(n+½),
+// started with v(½) = Λ⁻¹ F(0) / 2, damped critically for the lowest mode the iteration
+// sees: c = 2 √(uᵀ Λ K̃ u / uᵀ Λ u), K̃_ii = −(a_i(n) − a_i(n−1)) / v_i(n−½), a = Λ⁻¹ F.
+// Λ = M ω_max² s / 4 (M the model's masses and inertias, ω_max² the largest eigenvalue of
+// M⁻¹K by power iteration on finite differences of the model's forces, s a safety factor),
+// so the fictitious step is stable for every model that gives forces. A load step has
+// converged when |F|, the out-of-balance force of the free DOFs, is below the tolerance ×
+// the applied load |λP| (the reactions |R| when no load is applied), norms in M⁻¹.
+// Damage: every iteration evaluates the forces from the damage of the last converged state
+// (the bonds are put back before each evaluation), so a load step's damage is that of its
+// converged state only, never of an overshoot of the fictitious motion; the converged
+// evaluation's damage is kept, and its forces, computed with that damage, are the ones in
+// equilibrium. See docs/quasi-static.md.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "engine/context.hpp"
+#include "engine/error.hpp"
+#include "engine/frequency.hpp"
+#include "engine/integrator.hpp"
+#include "engine/model.hpp"
+
+namespace pdq {
+
+namespace {
+// Λ = M ω_max² kSafety / 4: the power iteration approaches ω_max from below.
+constexpr double kSafety = 1.5;
+constexpr int kPowerIterations = 100;
+// The finite-difference probe moves no DOF more than this fraction of the horizon (or rad).
+constexpr double kProbe = 1e-7;
+}  // namespace
+
+double Integrator::dofForce(const Particles& P, std::size_t i, int d, double factor) const {
+  const double f = P.integ(i)[frc_[d]];
+  const double load = bodies_[i].load[d] * factor;
+  return perMass_ && d < nT_ ? f * bodies_[i].mass + load : f + load;
+}
+
+double Integrator::highestFrequencySquared(Context& ctx, const std::function<void()>& forces) {
+  Particles& P = ctx.particles;
+  const std::size_t n = P.owned(), nl = P.local();
+  const int nd = nT_ + nR_;
+  const int nA = P.schema().nAlter();
+  DofSystem sys;
+  sys.dofs = nd;
+  sys.mass.resize(n * nd);
+  sys.held.resize(n * nd);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int d = 0; d < nd; ++d) {
+      const Constraint c = bodies_[i].constraint[d];
+      sys.mass[nd * i + d] = d < nT_ ? bodies_[i].mass : bodies_[i].inertia;
+      sys.held[nd * i + d] = c == Constraint::Prescribed || c == Constraint::KeepVelocity;
+    }
+  Bonds::Saved bonds;
+  ctx.bonds.save(bonds);
+  forces();
+  std::vector<double> f0(n * nd);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int d = 0; d < nd; ++d) f0[nd * i + d] = dofForce(P, i, d, 0);
+  std::vector<double> saved(P.alter(0), P.alter(0) + nl * nA);
+  const double h = model_.horizon();
+  auto restoring = [&](std::span<const double> u, std::span<double> f) {
+    double big = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      for (int d = 0; d < nd; ++d)
+        big = std::max(big, std::fabs(u[nd * i + d]) / (d < nT_ ? h : 1.0));
+    const double eps = kProbe / ctx.max(big);
+    for (std::size_t i = 0; i < nl; ++i) {
+      double* a = P.alter(i);
+      for (int d = 0; d < nT_; ++d) a[pos_[d]] += eps * u[nd * i + d];
+      if (rotation_ == Rotation::Planar) a[pos_[nT_]] += eps * u[nd * i + nT_];
+      if (rotation_ == Rotation::Spatial) {
+        const double phi[3] = {eps * u[nd * i + nT_], eps * u[nd * i + nT_ + 1],
+                               eps * u[nd * i + nT_ + 2]};
+        turn(P, i, phi);
+      }
+    }
+    forces();
+    ctx.bonds.restore(bonds);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int d = 0; d < nd; ++d) f[nd * i + d] = (dofForce(P, i, d, 0) - f0[nd * i + d]) / eps;
+    std::copy(saved.begin(), saved.end(), P.alter(0));
+  };
+  const double omega = highestFrequency(ctx, sys, restoring, kPowerIterations);
+  return omega * omega;
+}
+
+Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const std::string& source,
+                                      double factor, double previous,
+                                      const std::function<void()>& forces,
+                                      const std::function<void()>& exchange) {
+  Particles& P = ctx.particles;
+  ensureBodies(ctx);
+  const std::size_t n = P.owned();
+  const int nd = nT_ + nR_, nLinear = nT_ + (rotation_ == Rotation::Planar ? 1 : 0);
+  // The fictitious velocities are the solver's own: the model's stay zero, so no
+  // velocity-dependent force (damping) acts on the static state.
+  for (std::size_t i = 0; i < n; ++i)
+    for (int d = 0; d < nd; ++d) P.alter(i)[vel_[d]] = 0;
+  exchange();
+  if (omega2_ < 0) {
+    omega2_ = highestFrequencySquared(ctx, forces);
+    if (!(omega2_ > 0))
+      throw InputError(source, solver.line,
+                       "the quasi-static solver found no stiffness (are all degrees of freedom "
+                       "held, or does the model give no forces?)");
+    if (ctx.root())
+      ctx.log() << "quasi-static: highest frequency " << std::sqrt(omega2_)
+                << " rad/s of the free degrees of freedom\n";
+  }
+  // Prescribed values of this load step (a spatial rotation turns by its increment).
+  for (std::size_t i = 0; i < n; ++i) {
+    const Body& b = bodies_[i];
+    double* a = P.alter(i);
+    for (int d = 0; d < nLinear; ++d)
+      if (b.constraint[d] == Constraint::Prescribed)
+        a[pos_[d]] = (d < nT_ ? P.fixed(i)[pos_[d]] : 0.0) + b.value[d] * factor;
+    if (rotation_ == Rotation::Spatial) {
+      double phi[3];
+      for (int k = 0; k < 3; ++k)
+        phi[k] = b.constraint[nT_ + k] == Constraint::Prescribed
+                     ? b.value[nT_ + k] * (factor - previous)
+                     : 0.0;
+      if (phi[0] != 0 || phi[1] != 0 || phi[2] != 0) turn(P, i, phi);
+    }
+  }
+  exchange();
+
+  // Per owned DOF: fictitious mass, velocity, and last accelerations.
+  std::vector<double> lambda(n * nd), v(n * nd, 0.0), acc(n * nd), last(n * nd);
+  std::vector<unsigned char> free(n * nd);
+  for (std::size_t i = 0; i < n; ++i)
+    for (int d = 0; d < nd; ++d) {
+      const Constraint c = bodies_[i].constraint[d];
+      lambda[nd * i + d] = (d < nT_ ? bodies_[i].mass : bodies_[i].inertia) * omega2_ * kSafety / 4;
+      free[nd * i + d] = c == Constraint::Free || c == Constraint::Resting;
+    }
+  auto weight = [&](std::size_t i, int d) {
+    return 1 / (d < nT_ ? bodies_[i].mass : bodies_[i].inertia);
+  };
+  auto onSupport = [&](std::size_t i, int d) {
+    return bodies_[i].constraint[d] == Constraint::Resting &&
+           P.alter(i)[pos_[d]] <= P.fixed(i)[pos_[d]];
+  };
+  Bonds::Saved committed;
+  ctx.bonds.save(committed);
+  Relaxed out;
+  const long nOwned = static_cast<long>(n);
+  for (long it = 0;; ++it) {
+    if (it > 0) ctx.bonds.restore(committed);
+    forces();
+    // Out-of-balance forces of the free DOFs; reactions of the held ones (and of a resting
+    // DOF its support pushes).
+    double rr = 0, pp = 0, reaction = 0;
+    {
+      ExactSum sr, sp, sR;
+      for (std::size_t i = 0; i < n; ++i) {
+        double r2 = 0, p2 = 0, R2 = 0;
+        for (int d = 0; d < nd; ++d) {
+          const std::size_t k = nd * i + d;
+          const double f = dofForce(P, i, d, factor), w = weight(i, d);
+          const double load = bodies_[i].load[d] * factor;
+          p2 += load * load * w;
+          if (free[k] && !(onSupport(i, d) && f < 0)) {
+            r2 += f * f * w;
+            acc[k] = f / lambda[k];
+          } else {
+            R2 += f * f * w;
+            acc[k] = 0;
+          }
+        }
+        sr.add(r2);
+        sp.add(p2);
+        sR.add(R2);
+      }
+      rr = ctx.sum(sr);
+      pp = ctx.sum(sp);
+      reaction = ctx.sum(sR);
+    }
+    out.residual = std::sqrt(rr);
+    out.reference = pp > 0 ? std::sqrt(pp) : std::sqrt(reaction);
+    out.iterations = it;
+    if (out.residual <= solver.tolerance * out.reference) break;
+    if (it >= solver.maxIterations) {
+      out.converged = false;
+      break;
+    }
+    // Damping from the Rayleigh quotient of the local stiffness along the displacement.
+    double c = 0;
+    if (it > 0) {
+      ExactSum num, den;
+      for (std::size_t i = 0; i < n; ++i) {
+        double a = 0, b = 0;
+        for (int d = 0; d < nd; ++d) {
+          const std::size_t k = nd * i + d;
+          if (!free[k]) continue;
+          const double u = displacement(P, i, d), m = 1 / weight(i, d);
+          if (v[k] != 0) a += m * u * u * (-(acc[k] - last[k]) / v[k]);
+          b += m * u * u;
+        }
+        num.add(a);
+        den.add(b);
+      }
+      const double q = ctx.sum(num), u2 = ctx.sum(den);
+      if (q > 0 && u2 > 0) c = 2 * std::sqrt(q / u2);
+    }
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < nOwned; ++i) {
+      double* a = P.alter(i);
+      const double* X = P.fixed(i);
+      double phi[3] = {0, 0, 0};
+      for (int d = 0; d < nd; ++d) {
+        const std::size_t k = nd * i + d;
+        if (!free[k]) continue;
+        v[k] = it == 0 ? acc[k] / 2 : ((2 - c) * v[k] + 2 * acc[k]) / (2 + c);
+        last[k] = acc[k];
+        if (d >= nLinear) {
+          phi[d - nT_] = v[k];
+          continue;
+        }
+        a[pos_[d]] += v[k];
+        const double ref = d < nT_ ? X[pos_[d]] : 0.0;
+        if (bodies_[i].constraint[d] == Constraint::Resting && a[pos_[d]] < ref) {
+          a[pos_[d]] = ref;  // on the support
+          v[k] = 0;
+        }
+      }
+      if (rotation_ == Rotation::Spatial) turn(P, i, phi);
+    }
+    exchange();
+  }
+  iterations_ += static_cast<double>(out.iterations);
+  // The applied load (the sum of the loads' magnitudes) and the displacement along it
+  // (u·P / Σ|P|: for loads all in one direction their load-weighted mean displacement).
+  {
+    ExactSum sp, su;
+    for (std::size_t i = 0; i < n; ++i) {
+      double a = 0, b = 0;
+      for (int d = 0; d < nd; ++d) {
+        a += std::fabs(bodies_[i].load[d]);
+        b += bodies_[i].load[d] * displacement(P, i, d);
+      }
+      sp.add(a);
+      su.add(b);
+    }
+    const double total = ctx.sum(sp), work = ctx.sum(su);
+    out.load = factor * total;
+    out.displacement = total > 0 ? work / total : 0;
+  }
+  return out;
+}
+
+}  // namespace pdq

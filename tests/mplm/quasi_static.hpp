@@ -1,0 +1,65 @@
+#pragma once
+// Running mplm2d with the quasi-static solver in a test, and reading its quasi_static.csv.
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "engine/problem.hpp"
+#include "io/standard_outputs.hpp"
+#include "prep/mplm/generators.hpp"
+
+namespace pdq::mplm::test {
+
+inline std::unique_ptr<Simulation> quasiStatic(Comm& comm, const Params& p, ParticleSet ps,
+                                               const Solver& solver, const std::string& dir,
+                                               double scale = 1) {
+  RunConfig run;
+  run.solver = solver;
+  run.steps = solver.loadSteps;
+  run.loading.scale = scale;
+  run.outDir = dir;
+  auto sim = makeSimulation(makeProblem("mplm2d", p, std::move(ps), run), comm);
+  sim->setup();
+  return sim;
+}
+
+inline Solver solver(double tolerance, long loadSteps = 1, long maxIterations = 200000) {
+  Solver s;
+  s.quasiStatic = true;
+  s.tolerance = tolerance;
+  s.loadSteps = loadSteps;
+  s.maxIterations = maxIterations;
+  return s;
+}
+
+// quasi_static.csv's rows (after the header) as numbers.
+inline std::vector<std::vector<double>> loadStepRows(const std::string& dir) {
+  std::ifstream in(dir + "/quasi_static.csv");
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> row;
+    std::stringstream ss(line);
+    std::string cell;
+    while (std::getline(ss, cell, ',')) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// A small reinforced beam under its line load (cracks at load_scale 120).
+inline ParticleSet smallBeam() {
+  BeamSpec b;
+  b.span = 0.4;
+  b.depth = 0.1;
+  b.barDiameter = 0.01;
+  b.stirrupDiameter = 0.006;
+  b.stirrupFirst = 0.04;
+  b.stirrupSpacing = 0.1;
+  return beam(b);
+}
+
+}  // namespace pdq::mplm::test

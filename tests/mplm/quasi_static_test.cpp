@@ -1,0 +1,173 @@
+// The quasi-static solver (adaptive dynamic relaxation) on mplm2d:
+//   * the patch test: a boundary layer moved by a uniform strain, the interior relaxes to
+//     that strain (the exact solution) within 1e-6;
+//   * a cantilever under a tip load relaxes to the lattice's linear static solution (K
+//     assembled by finite differences, solved directly) within 1e-6;
+//   * with damage, every load step's converged state balances the loads of the damaged
+//     lattice: the forces evaluated again there leave an out-of-balance force below the
+//     tolerance.
+#include "quasi_static.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "engine/error.hpp"
+#include "harness.hpp"
+#include "io/standard_outputs.hpp"
+#include "models/mplm/2d/attributes.hpp"
+#include "prep/hexagonal.hpp"
+#include "prep/mplm/specimen.hpp"
+#include "support/static_reference.hpp"
+
+namespace pdq::mplm {
+namespace {
+
+TEST(QuasiStatic, PatchTestRelaxesToTheUniformStrain) {
+  constexpr double s = 0.02, L = 0.3, exx = 1e-4, eyy = -3e-5, exy = 0;
+  ParticleSet ps = newParticleSet();
+  addConcrete(ps, prep::hexagonalRectangle(L, L, s, prep::HexOrientation::BondsAlongX));
+  auto edge = select(ps, [&](const double* f) {
+    return f[0] < 1.5 * s || f[0] > L - 1.5 * s || f[1] < 1.5 * s || f[1] > L - 1.5 * s;
+  });
+  for (std::size_t k : edge) {
+    const double X = ps.fixedRow(k)[0] - L / 2, Y = ps.fixedRow(k)[1] - L / 2;
+    constrain(ps, {k}, FIX_X | FIX_Y | FIX_T, {exx * X + exy * Y, exy * X + eyy * Y, 0});
+  }
+  Comm comm;
+  auto sim = test::quasiStatic(comm, test::params({{"kinematics", "small"}}), ps,
+                               test::solver(1e-10), "qs_patch_out");
+  sim->run();
+  const auto rows = test::loadStepRows("qs_patch_out");
+  ASSERT_EQ(rows.size(), 1u);
+  if (comm.root()) std::printf("patch test: %g iterations\n", rows[0][2]);
+  Particles& P = sim->particles();
+  double worst = 0;
+  for (std::size_t i = 0; i < P.owned(); ++i) {
+    const double X = P.fixed(i)[FX_X] - L / 2, Y = P.fixed(i)[FX_Y] - L / 2;
+    const double ux = P.alter(i)[AX] - P.fixed(i)[FX_X], uy = P.alter(i)[AY] - P.fixed(i)[FX_Y];
+    const double w = std::max({std::fabs(ux - exx * X - exy * Y), std::fabs(uy - exy * X - eyy * Y),
+                               std::fabs(P.alter(i)[THETA]) * s});
+    worst = std::max(worst, w);
+  }
+  worst = sim->context().max(worst);
+  // Relative to the largest displacement of the field.
+  EXPECT_LT(worst / (std::fabs(exx) + std::fabs(exy)) / (L / 2), 1e-6) << worst;
+}
+
+// A clamped cantilever, 8 rows by 61 columns, a tip load P spread over the tip column.
+struct Cantilever {
+  ParticleSet ps = newParticleSet();
+  std::vector<std::size_t> clamped, tip;
+};
+
+Cantilever cantilever(double P) {
+  constexpr double s = 0.02;
+  constexpr int rows = 8, columns = 61;
+  const double p = prep::hexPitch(s);
+  const double length = (columns - 1) * p, depth = (rows - 0.5) * s;
+  Cantilever c;
+  addConcrete(c.ps, prep::hexagonalRectangle(length, depth, s, prep::HexOrientation::BondsAlongY));
+  c.clamped = select(c.ps, [&](const double* f) { return f[0] < 0.5 * p; });
+  c.tip = select(c.ps, [&](const double* f) { return f[0] > length - 0.5 * p; });
+  constrain(c.ps, c.clamped, FIX_X | FIX_Y | FIX_T);
+  load(c.ps, c.tip, 0, -P / rows);
+  monitor(c.ps, c.tip);
+  return c;
+}
+
+TEST(QuasiStatic, CantileverRelaxesToTheLinearStaticSolution) {
+  Comm comm;
+  if (comm.size() > 1) GTEST_SKIP() << "the direct reference solve runs on one rank";
+  const Cantilever c = cantilever(2000);
+  const Params p =
+      test::params({{"thickness", "0.1"}, {"damage", "false"}, {"kinematics", "small"}});
+  auto sim = test::quasiStatic(comm, p, c.ps, test::solver(1e-7), "qs_cantilever_out");
+  sim->run();
+  const auto rows = test::loadStepRows("qs_cantilever_out");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_LE(rows[0][5], 1e-7);
+
+  auto ref = test::quasiStatic(comm, p, c.ps, test::solver(1e-10), "qs_cantilever_ref");
+  Particles& R = ref->particles();
+  std::vector<pdq::test::FreeDof> dofs;
+  for (std::size_t i = 0; i < R.owned(); ++i) {
+    if (R.fixed(i)[CONSTRAINT] != 0) continue;
+    const double* f = R.fixed(i);
+    dofs.push_back({i, AX, FORCE_X, 1, f[LOAD_X]});
+    dofs.push_back({i, AY, FORCE_Y, 1, f[LOAD_Y]});
+    dofs.push_back({i, THETA, MOMENT, 1, f[LOAD_M]});
+  }
+  const std::vector<double> u = pdq::test::linearStatic(*ref, dofs, 1e-6);
+  // Particles of both runs sit alike (same problem, one rank).
+  Particles& P = sim->particles();
+  double du = 0, nu = 0, dt = 0, nt = 0, tip = 0, tipRef = 0;
+  for (std::size_t k = 0; k < dofs.size(); ++k) {
+    const std::size_t i = dofs[k].particle;
+    ASSERT_EQ(P.gid(i), R.gid(i));
+    const int col = dofs[k].alter;
+    const double got = P.alter(i)[col] - (col == THETA ? 0.0 : P.fixed(i)[col]);
+    (col == THETA ? dt : du) += (got - u[k]) * (got - u[k]);
+    (col == THETA ? nt : nu) += u[k] * u[k];
+    if (col == AY && P.fixed(i)[MONITOR] != 0) tip += got, tipRef += u[k];
+  }
+  const double errU = std::sqrt(du / nu), errT = std::sqrt(dt / nt);
+  std::printf(
+      "cantilever: %g iterations, |u - u_K|/|u_K| = %.2e (translations), %.2e "
+      "(rotations), tip %.9g m vs %.9g m\n",
+      rows[0][2], errU, errT, tip / 8, tipRef / 8);
+  EXPECT_LT(errU, 1e-6);
+  EXPECT_LT(errT, 1e-6);
+  EXPECT_NEAR(tip, tipRef, 1e-6 * std::fabs(tipRef));
+}
+
+// With damage: at every load step's converged state, the forces evaluated again (with the
+// damage kept) balance the loads to the tolerance, in the solver's norm (free DOFs, each
+// force over its mass or inertia).
+TEST(QuasiStatic, DamagedStateIsInEquilibrium) {
+  Comm comm;
+  const double tol = 1e-6, scale = 120;
+  auto sim = test::quasiStatic(comm, test::params({}), test::smallBeam(), test::solver(tol, 3),
+                               "qs_damage_out", scale);
+  Context& ctx = sim->context();
+  std::vector<Body> bodies(sim->particles().owned());
+  sim->model().bodies(ctx, bodies);
+  while (sim->advance()) {
+  }
+  sim->finish();
+  EXPECT_EQ(sim->step(), 3);
+  EXPECT_GT(test::global(*sim, "damaged"), 0) << "the load should damage the root";
+  Particles& P = sim->particles();
+  sim->model().force(ctx);
+  const double factor = ctx.loadFactor();
+  EXPECT_EQ(factor, scale);
+  const double r2 = ctx.sumOwned([&](std::size_t i) {
+    double s = 0;
+    for (int d = 0; d < 3; ++d) {
+      if (bodies[i].constraint[d] != pdq::Constraint::Free) continue;
+      const double f = P.integ(i)[d] + bodies[i].load[d] * factor;
+      s += f * f / (d < 2 ? bodies[i].mass : bodies[i].inertia);
+    }
+    return s;
+  });
+  const double p2 = ctx.sumOwned([&](std::size_t i) {
+    double s = 0;
+    for (int d = 0; d < 3; ++d)
+      s += std::pow(bodies[i].load[d] * factor, 2) / (d < 2 ? bodies[i].mass : bodies[i].inertia);
+    return s;
+  });
+  EXPECT_GT(p2, 0);
+  EXPECT_LE(std::sqrt(r2), tol * std::sqrt(p2));
+  const auto rows = test::loadStepRows("qs_damage_out");
+  ASSERT_EQ(rows.size(), 3u);
+  for (const auto& row : rows) EXPECT_LE(row[5], tol);
+  if (comm.root())
+    std::printf("damaged cantilever: %g, %g, %g iterations; %g damaged interactions\n", rows[0][2],
+                rows[1][2], rows[2][2], test::global(*sim, "damaged"));
+}
+
+}  // namespace
+}  // namespace pdq::mplm
