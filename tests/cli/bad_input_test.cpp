@@ -219,7 +219,11 @@ dir = "out"
     const auto r = runPdq({"run", "qs.toml"}, dir);
     EXPECT_EQ(r.code, 1) << r.all();
     EXPECT_THAT(r.err, HasSubstr(c.expected));
-    if (c.name == std::string("unknown kind")) EXPECT_THAT(r.err, HasSubstr("quasi_static"));
-    if (c.writesNothing) EXPECT_FALSE(fs::exists(dir + "/out"));
+    if (c.name == std::string("unknown kind")) {
+      EXPECT_THAT(r.err, HasSubstr("quasi_static"));
+    }
+    if (c.writesNothing) {
+      EXPECT_FALSE(fs::exists(dir + "/out"));
+    }
   }
 }
