@@ -107,6 +107,16 @@ std::string writeSolver(const Solver& s) {
   return std::string(buf) + "load_steps " + std::to_string(s.loadSteps) + "\n";
 }
 
+void checkStaticLoading(const Solver& s, const Params& loading) {
+  if (!s.quasiStatic) return;
+  for (const char* k : {"ramp_time", "hold_time", "hold_damping_ratio"})
+    if (loading.has(k))
+      throw InputError(loading.raw(k)->file, loading.raw(k)->line,
+                       std::string(k) +
+                           " belongs to dynamic loading; the quasi-static solver applies "
+                           "load_scale in load_steps increments");
+}
+
 void Integrator::resolve(const Schema& s) {
   const Motion m = model_.motion();
   if (m.position.size() != m.velocity.size() || m.position.size() != m.force.size() ||

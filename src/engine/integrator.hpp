@@ -76,6 +76,9 @@ struct Solver {
 // pdQInput.dat with kindKey "solver"); `writeSolver` gives the keys for pdQInput.dat.
 Solver readSolver(const Params& p, const std::string& kindKey);
 std::string writeSolver(const Solver& s);
+// InputError (naming the key's line) for a time-based [loading] key under the quasi-static
+// solver, whose run is its load steps.
+void checkStaticLoading(const Solver& s, const Params& loading);
 
 enum class Rotation { None, Planar, Spatial };
 

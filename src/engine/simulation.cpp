@@ -252,18 +252,7 @@ bool Simulation::relaxLoadStep() {
                   ? static_cast<int>(comm_.max(static_cast<double>(stopCheck_())))
                   : 0;
   const bool interrupted = stopCode_ > 0;
-  const bool stop = !ctx_->stopReason().empty();
-  if (stop) {
-    ended_ = true;
-    debug_ << "stopped at step " << step_ << ": " << ctx_->stopReason() << "\n";
-  }
-  if (interrupted) {
-    ended_ = true;
-    debug_ << "stopped early at load step " << step_ << " (stop code " << stopCode_
-           << "); restart files written\n";
-  }
-  writeOutputs(stop || step_ == cfg_.steps, interrupted);
-  return !ended_ && step_ < cfg_.steps;
+  return endStep(interrupted);
 }
 
 bool Simulation::advance() {
@@ -326,6 +315,12 @@ bool Simulation::advance() {
     stats_.haloBytes = cube_->stats().haloBytes;
     stats_.haloWallParticles = cube_->stats().haloWallParticles;
   }
+  return endStep(interrupted);
+}
+
+// The end of a step (or load step): a stop the model asked for or one from outside, and the
+// outputs due.
+bool Simulation::endStep(bool interrupted) {
   const bool stop = !ctx_->stopReason().empty();
   if (stop) {
     ended_ = true;

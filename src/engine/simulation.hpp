@@ -98,6 +98,7 @@ class Simulation {
   [[noreturn]] void reportInstability(Gid id, const std::string& what);
   void writeLogs();  // debug.txt (appended) and timing.out (rewritten); collective
   bool relaxLoadStep();
+  bool endStep(bool interrupted);
   double staticFactor(long loadStep) const;
 
   std::unique_ptr<Model> model_;

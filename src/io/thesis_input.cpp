@@ -158,13 +158,7 @@ Problem readThesisInput(const std::string& dir) {
   pb.run.loading = readLoading(engine);
   pb.run.solver = readSolver(engine, "solver");
   if (pb.run.solver.quasiStatic) {
-    // The number of steps is the number of load steps.
-    for (const char* k : {"ramp_time", "hold_time", "hold_damping_ratio"})
-      if (engine.has(k))
-        throw InputError(input, engine.raw(k)->line,
-                         std::string(k) +
-                             " belongs to dynamic loading; the quasi-static solver applies "
-                             "load_scale in load_steps");
+    checkStaticLoading(pb.run.solver, engine);
     if (pb.run.steps != pb.run.solver.loadSteps)
       throw InputError(input, lastLine,
                        "with the quasi-static solver the number of steps is the number of "

@@ -320,13 +320,7 @@ Scenario readScenario(const std::string& path) {
   pb.run.solver = readSolver(solver, "kind");
   solver.checkAllUsed();
   if (pb.run.solver.quasiStatic) {
-    // The run is its load steps; the load protocol's time plays no part.
-    for (const char* k : {"ramp_time", "hold_time", "hold_damping_ratio"})
-      if (loading.has(k))
-        throw InputError(path, loading.raw(k)->line,
-                         std::string(k) +
-                             " belongs to dynamic loading; the quasi-static solver applies "
-                             "load_scale in [solver] load_steps");
+    checkStaticLoading(pb.run.solver, loading);
     if (top.has("steps"))
       throw InputError(path, top.raw("steps")->line,
                        "the quasi-static solver's run is its [solver] load_steps; remove steps");

@@ -64,14 +64,7 @@ TEST(Determinism, CrackingPlateSameBitsOnOneAndAllRanks) {
 }
 
 TEST(Determinism, ReinforcedBeamSameBitsOnOneAndAllRanks) {
-  BeamSpec b;
-  b.span = 0.4;
-  b.depth = 0.1;
-  b.barDiameter = 0.01;
-  b.stirrupDiameter = 0.006;
-  b.stirrupFirst = 0.04;
-  b.stirrupSpacing = 0.1;
-  checkDeterministic({beam(b), test::params({}), 3000}, 200);
+  checkDeterministic({test::smallBeam(), test::params({}), 3000}, 200);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "engine/model.hpp"
 #include "engine/params.hpp"
 #include "engine/simulation.hpp"
+#include "prep/mplm/generators.hpp"
 #include "scenario/scenario.hpp"
 #include "support/harness.hpp"
 
@@ -34,6 +35,19 @@ inline std::unique_ptr<Simulation> simulation(Comm& comm, const Params& p, Parti
                                               long steps, const std::string& modelName = "mplm2d",
                                               const Loading& loading = {}) {
   return pdq::test::simulation(comm, modelName, p, std::move(ps), steps, loading);
+}
+
+// A small reinforced beam under its line load (it cracks: the quasi-static tests load it
+// to load_scale 120, the determinism test dynamically to 200).
+inline ParticleSet smallBeam() {
+  BeamSpec b;
+  b.span = 0.4;
+  b.depth = 0.1;
+  b.barDiameter = 0.01;
+  b.stirrupDiameter = 0.006;
+  b.stirrupFirst = 0.04;
+  b.stirrupSpacing = 0.1;
+  return beam(b);
 }
 
 }  // namespace pdq::mplm::test

@@ -8,7 +8,6 @@
 
 #include "engine/problem.hpp"
 #include "io/standard_outputs.hpp"
-#include "prep/mplm/generators.hpp"
 
 namespace pdq::mplm::test {
 
@@ -48,18 +47,6 @@ inline std::vector<std::vector<double>> loadStepRows(const std::string& dir) {
     rows.push_back(row);
   }
   return rows;
-}
-
-// A small reinforced beam under its line load (cracks at load_scale 120).
-inline ParticleSet smallBeam() {
-  BeamSpec b;
-  b.span = 0.4;
-  b.depth = 0.1;
-  b.barDiameter = 0.01;
-  b.stirrupDiameter = 0.006;
-  b.stirrupFirst = 0.04;
-  b.stirrupSpacing = 0.1;
-  return beam(b);
 }
 
 }  // namespace pdq::mplm::test
