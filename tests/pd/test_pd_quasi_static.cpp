@@ -44,7 +44,9 @@ TEST(PdQuasiStatic, PmbCantileverRelaxesToTheLinearStaticSolution) {
   cfg.solver.maxIterations = 200000;
   cfg.steps = 1;
   cfg.outDir = "pd_quasi_static_out";
-  auto sim = makeSimulation(cantilever(nx, ny, F), cfg, comm);
+  Problem qs = cantilever(nx, ny, F);
+  qs.run = cfg;
+  auto sim = makeSimulation(std::move(qs), comm);
   sim->run();
   std::ifstream csv("pd_quasi_static_out/quasi_static.csv");
   std::string header, row;
@@ -58,7 +60,8 @@ TEST(PdQuasiStatic, PmbCantileverRelaxesToTheLinearStaticSolution) {
   refCfg.outDir = "pd_quasi_static_ref";
   Problem pb = cantilever(nx, ny, F);
   const int fy = pb.col("fy"), bc = pb.col("bc_x");
-  auto ref = makeSimulation(std::move(pb), refCfg, comm);
+  pb.run = refCfg;
+  auto ref = makeSimulation(std::move(pb), comm);
   ref->setup();
   Particles& R = ref->particles();
   std::vector<test::FreeDof> dofs;
