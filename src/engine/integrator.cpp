@@ -7,6 +7,7 @@
 #include "engine/context.hpp"
 #include "engine/error.hpp"
 #include "engine/model.hpp"
+#include "engine/rotation.hpp"
 
 namespace pdq {
 
@@ -17,31 +18,6 @@ int column(const std::vector<std::string>& names, const std::string& name, const
     if (names[k] == name) return static_cast<int>(k);
   throw std::logic_error(std::string("the model's motion names '") + name +
                          "', which is not in its " + table + " attributes");
-}
-
-// q <- exp(φ/2) ⊗ q for the rotation vector φ (global frame), renormalised.
-void rotate(double* q[4], const double phi[3]) {
-  const double angle = std::sqrt(phi[0] * phi[0] + phi[1] * phi[1] + phi[2] * phi[2]);
-  const double c = std::cos(0.5 * angle);
-  // sin(angle/2)/angle, by its series where the quotient loses digits.
-  const double s = angle > 1e-4 ? std::sin(0.5 * angle) / angle : 0.5 - angle * angle / 48;
-  const double w = c, x = s * phi[0], y = s * phi[1], z = s * phi[2];
-  const double qw = *q[0], qx = *q[1], qy = *q[2], qz = *q[3];
-  double r[4] = {w * qw - x * qx - y * qy - z * qz, w * qx + x * qw + y * qz - z * qy,
-                 w * qy - x * qz + y * qw + z * qx, w * qz + x * qy - y * qx + z * qw};
-  const double norm = std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2] + r[3] * r[3]);
-  for (int k = 0; k < 4; ++k) *q[k] = r[k] / norm;
-}
-
-// The rotation vector of a unit quaternion (angle in [0, π] times the axis).
-void rotationVector(const double* q[4], double out[3]) {
-  const double vx = *q[1], vy = *q[2], vz = *q[3];
-  const double sv = std::sqrt(vx * vx + vy * vy + vz * vz);
-  const double sign = *q[0] < 0 ? -1.0 : 1.0;
-  const double f = sv > 0 ? 2 * std::atan2(sv, sign * *q[0]) / sv * sign : 2.0;
-  out[0] = f * vx;
-  out[1] = f * vy;
-  out[2] = f * vz;
 }
 
 }  // namespace
@@ -186,10 +162,7 @@ double Integrator::displacement(const Particles& P, std::size_t i, int d) const 
   const double* a = P.alter(i);
   if (d < nT_) return a[pos_[d]] - P.fixed(i)[pos_[d]];
   if (rotation_ == Rotation::Planar) return a[pos_[d]];
-  const double* q[4] = {&a[quat_[0]], &a[quat_[1]], &a[quat_[2]], &a[quat_[3]]};
-  double phi[3];
-  rotationVector(q, phi);
-  return phi[d - nT_];
+  return logRot({a[quat_[0]], a[quat_[1]], a[quat_[2]], a[quat_[3]]})[d - nT_];
 }
 
 // 2 ζ_h ω₁, ω₁² = F·u / (u·M·u) the Rayleigh quotient of the current deflection under the
@@ -268,7 +241,7 @@ void Integrator::step(Context& ctx) {
       }
     }
     if (rotation_ != Rotation::Spatial) continue;
-    double phi[3];
+    Vec phi;
     for (int k = 0; k < 3; ++k) {
       const int d = nT_ + k, v = vel_[d];
       if (b.constraint[d] == Constraint::Prescribed) {
@@ -279,8 +252,13 @@ void Integrator::step(Context& ctx) {
       }
       phi[k] = a[v] * h;
     }
-    double* q[4] = {&a[quat_[0]], &a[quat_[1]], &a[quat_[2]], &a[quat_[3]]};
-    rotate(q, phi);
+    // The orientation turns by the increment's quaternion, renormalised against round-off.
+    const Quat q =
+        normalised(mul(expRot(phi), {a[quat_[0]], a[quat_[1]], a[quat_[2]], a[quat_[3]]}));
+    a[quat_[0]] = q.w;
+    a[quat_[1]] = q.x;
+    a[quat_[2]] = q.y;
+    a[quat_[3]] = q.z;
   }
 }
 

@@ -12,7 +12,10 @@
 //   * Motion: which alterable columns hold positions and velocities and which integ columns
 //     the forces, by name, and how rotations are stored: none; Planar (2D: one angle θ_z, its
 //     rate ω_z and the moment m_z); or Spatial (3D: a unit quaternion qw qx qy qz, the angular
-//     velocity ωx ωy ωz in the global frame, and the moments mx my mz).
+//     velocity ωx ωy ωz in the global frame, and the moments mx my mz). A spatial orientation
+//     turns by the exact rotation of the step's increment, q(n+1) = exp(ω(n+½) Δt) ⊗ q(n),
+//     renormalised (engine/rotation.hpp), so rotations of any size compose exactly; the
+//     moments are those conjugate to such turns about the global axes.
 //   * Body per owned particle: mass, rotational inertia (isotropic, so a free rotation obeys
 //     dω/dt = M/I with no gyroscopic term), and per degree of freedom (translations first,
 //     then rotations) its constraint, its peak external load and its peak prescribed value.

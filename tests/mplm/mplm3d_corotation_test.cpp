@@ -7,10 +7,10 @@
 #include <cmath>
 #include <numbers>
 
+#include "engine/rotation.hpp"
 #include "harness.hpp"
 #include "models/mplm/3d/attributes.hpp"
 #include "models/mplm/3d/elastic_constants.hpp"
-#include "models/mplm/3d/rotation.hpp"
 #include "prep/fcc.hpp"
 #include "prep/mplm/specimen3d.hpp"
 
@@ -35,9 +35,10 @@ std::pair<double, double> internalAfterRotation(const std::string& kinematics, V
     a[AX] = 0.3 + x[0];
     a[AY] = -0.2 + x[1];
     a[AZ] = 0.1 + x[2];
-    a[RX] = th[0];
-    a[RY] = th[1];
-    a[RZ] = th[2];
+    a[QW] = q.w;
+    a[QX] = q.x;
+    a[QY] = q.y;
+    a[QZ] = q.z;
   }
   Comm comm;
   auto sim = mplm::test::simulation(

@@ -111,16 +111,10 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const DamageL
 inline double elasticEnergy(const Interaction& k, const Chord& ch, const DamageLaw& law,
                             const double* state) {
   const double ti = ch.ti, tj = ch.tj;
-  double axialKeep = 1, bendKeep = 1, stretch = ch.da;
-  if (state && k.kind == Kind::Concrete) {
-    bendKeep = 1 - std::max(state[0], state[1]);
-    axialKeep = ch.da >= 0 ? bendKeep : (law.crushing ? 1 - state[1] : 1.0);
-  } else if (state && k.kind == Kind::Bar) {
-    stretch = ch.da - state[2] * k.L0;
-  }
+  const Held h = held(k.kind, ch.da, k.L0, law, state);
   // ½ N·stretch, and ½ (M_i θ̄_i + M_j θ̄_j) with the end moments of eq. 4.3.
-  return 0.5 * k.ka * stretch * stretch * axialKeep +
-         2 * k.kb * (ti * ti + ti * tj + tj * tj) * bendKeep;
+  return 0.5 * k.ka * h.stretch * h.stretch * h.axialKeep +
+         2 * k.kb * (ti * ti + ti * tj + tj * tj) * h.bendKeep;
 }
 
 }  // namespace pdq::mplm

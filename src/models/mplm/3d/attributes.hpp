@@ -1,7 +1,8 @@
 #pragma once
 // The attributes of a 3D MPLM particle and interaction, shared by the model and the
 // generators that fill a ParticleSet for it. Six degrees of freedom: the position and the
-// rotation vector θ (axis × angle, |θ| ≤ π) of the particle's triad.
+// orientation of the particle's triad, a unit quaternion (engine/rotation.hpp; generators
+// leave it zero, which the model reads as the reference orientation).
 #include "engine/schema.hpp"
 
 namespace pdq::mplm3d {
@@ -32,8 +33,9 @@ enum Fixed {
   MONITOR,  // 1: part of the displacement reported in the history
   N_FIXED
 };
-// Alterable attributes: everything a neighbour reads (damping needs the velocities).
-enum Alter { AX = 0, AY, AZ, VX, VY, VZ, RX, RY, RZ, WX, WY, WZ, N_ALTER };
+// Alterable attributes: everything a neighbour reads (damping needs the velocities); the
+// angular velocity is in the global frame.
+enum Alter { AX = 0, AY, AZ, VX, VY, VZ, QW, QX, QY, QZ, WX, WY, WZ, N_ALTER };
 // Per-step scratch of owned particles: force, then moment.
 enum Integ { FORCE_X = 0, FORCE_Y, FORCE_Z, MOMENT_X, MOMENT_Y, MOMENT_Z, N_INTEG };
 // Per-interaction state (each interaction is stored on both particles and evolves alike).
@@ -60,7 +62,7 @@ inline Schema schema() {
   return Schema::make({"material", "bar", "link", "area", "second_moment", "constraint", "load_x",
                        "load_y", "load_z", "load_mx", "load_my", "load_mz", "disp_x", "disp_y",
                        "disp_z", "disp_rx", "disp_ry", "disp_rz", "monitor"},
-                      {"vx", "vy", "vz", "rx", "ry", "rz", "wx", "wy", "wz"},
+                      {"vx", "vy", "vz", "qw", "qx", "qy", "qz", "wx", "wy", "wz"},
                       {"fx", "fy", "fz", "mx", "my", "mz"}, {"omega_t", "omega_c", "plastic"});
 }
 

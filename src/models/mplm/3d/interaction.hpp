@@ -10,7 +10,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "models/mplm/3d/rotation.hpp"
+#include "engine/rotation.hpp"
 #include "models/mplm/common/damage.hpp"
 #include "models/mplm/common/interactions.hpp"
 
@@ -44,14 +44,24 @@ inline void referenceFrame(const Vec& n0, Vec& e2, Vec& e3) {
   e3 = cross(n0, e2);
 }
 
+// What the co-rotational form needs beyond the end rotations to turn the element's end
+// loads into the gradient of its energy: the frame qb = qs ⊗ qm built from the mean triad qm
+// = p/|p| (p = q_i ± q_j) and the smallest rotation qs from a = R(qm) n0 to the chord's
+// direction e1; the end rotations vi, vj = log(qb* ⊗ q) in reference components.
+struct Frame {
+  Quat qb, qs, p, qi;
+  Vec a, e1, vi, vj;
+  double L;
+};
+
 // Deformation of the interaction in its local frame: elongation, chord length, the end
 // rotations relative to the frame in local components (θ̄x torsion, θ̄y, θ̄z bending), and
-// the frame's rotation from the reference one (identity in the small form).
+// (co-rotational form) the frame.
 struct Chord {
   double da, invL;
   Vec ti, tj;
   Vec e2, e3;  // the reference frame's second and third axes
-  Quat frame;
+  Frame frame;
   bool rotated;
 };
 
@@ -69,7 +79,7 @@ inline Chord smallChord(const Interaction& k, const Vec& d, const Vec& thi, cons
           {dot(bj, k.n0), dot(bj, e2), dot(bj, e3)},
           e2,
           e3,
-          {1, 0, 0, 0},
+          {},
           false};
 }
 
@@ -81,8 +91,8 @@ inline Chord corotChord(const Interaction& k, const Vec& r, const Quat& qi, cons
   const double L = std::sqrt(dot(r, r)), invL = 1 / L;
   // Mean triad: q and −q are one rotation, so add the pair on the same hemisphere.
   const double sgn = qi.w * qj.w + qi.x * qj.x + qi.y * qj.y + qi.z * qj.z >= 0 ? 1.0 : -1.0;
-  const Quat qm =
-      normalised({qi.w + sgn * qj.w, qi.x + sgn * qj.x, qi.y + sgn * qj.y, qi.z + sgn * qj.z});
+  const Quat p{qi.w + sgn * qj.w, qi.x + sgn * qj.x, qi.y + sgn * qj.y, qi.z + sgn * qj.z};
+  const Quat qm = normalised(p);
   const Vec a = rotate(qm, k.n0);
   const Vec e1{r[0] * invL, r[1] * invL, r[2] * invL};
   const Vec ax = cross(a, e1);
@@ -98,8 +108,42 @@ inline Chord corotChord(const Interaction& k, const Vec& r, const Quat& qi, cons
           {dot(vj, k.n0), dot(vj, e2), dot(vj, e3)},
           e2,
           e3,
-          qb,
+          {qb, qs, p, qi, a, e1, vi, vj, L},
           true};
+}
+
+// The force and moment on i in the co-rotational form, exactly minus the gradient of the
+// element's energy U(L, t_i, t_j): N = ∂U/∂L, gi and gj = ∂U/∂t (reference components).
+// With global turns δφ of the triads and the frame's turn δβ,
+//   δU = N e1·δr + h_i·(δφ_i − δβ) + h_j·(δφ_j − δβ),  h = R(qb) J⁻ᵀ(v) g,
+// and δβ = (spin of qs) + R(qs) (spin of qm) follows from the chord (δe1 = P δr / L,
+// P = I − e1 e1ᵀ) and from the triads through the mean p = q_i ± q_j; with H = h_i + h_j:
+//   H·δβ = δr·P G_b / L + δμ·G,  δμ·G = δφ_i·(u₀ G + u × G)/|p|² + (j's part),
+// (u₀, u) = q_i ⊗ p*, G_b = W × a − κ a, G = a × (e1 × W − κ e1) + R(qs)ᵀ H,
+// W = H − (c × H)/(1 + a·e1), κ = (H·c)/(1 + a·e1), c = a × e1.
+inline void corotLoad(const Frame& fr, double N, const Vec& gi, const Vec& gj, Vec& f, Vec& m) {
+  const Vec hi = rotate(fr.qb, turnGradient(fr.vi, gi));
+  const Vec hj = rotate(fr.qb, turnGradient(fr.vj, gj));
+  const Vec H{hi[0] + hj[0], hi[1] + hj[1], hi[2] + hj[2]};
+  const Vec& a = fr.a;
+  const Vec& e1 = fr.e1;
+  const Vec c = cross(a, e1);
+  const double inv = 1 / (1 + dot(a, e1)), kappa = dot(H, c) * inv;
+  const Vec cH = cross(c, H);
+  const Vec W{H[0] - cH[0] * inv, H[1] - cH[1] * inv, H[2] - cH[2] * inv};
+  const Vec Wa = cross(W, a), eW = cross(e1, W);
+  const Vec Gb{Wa[0] - kappa * a[0], Wa[1] - kappa * a[1], Wa[2] - kappa * a[2]};
+  const Vec Ga{eW[0] - kappa * e1[0], eW[1] - kappa * e1[1], eW[2] - kappa * e1[2]};
+  const Vec aGa = cross(a, Ga), sH = rotate(conj(fr.qs), H);
+  const Vec G{aGa[0] + sH[0], aGa[1] + sH[1], aGa[2] + sH[2]};
+  const double along = dot(Gb, e1), invL = 1 / fr.L;
+  const Quat u = mul(fr.qi, conj(fr.p));
+  const double invP = 1 / (fr.p.w * fr.p.w + fr.p.x * fr.p.x + fr.p.y * fr.p.y + fr.p.z * fr.p.z);
+  const Vec uG = cross({u.x, u.y, u.z}, G);
+  for (int d = 0; d < 3; ++d) {
+    f[d] = N * e1[d] - (Gb[d] - along * e1[d]) * invL;
+    m[d] = -hi[d] + (u.w * G[d] + uG[d]) * invP;
+  }
 }
 
 struct EndLoad {
@@ -141,20 +185,42 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::D
   const double Myi = kb * (4 * ti[1] + 2 * tj[1]), Myj = kb * (2 * ti[1] + 4 * tj[1]);
   const double Mzi = kb * (4 * ti[2] + 2 * tj[2]), Mzj = kb * (2 * ti[2] + 4 * tj[2]);
   const double T = k.kt * bendKeep * (tj[0] - ti[0]);
-  // Local components on i: force (N, −(Mz_i+Mz_j)/L, (My_i+My_j)/L), moment (T, −My_i, −Mz_i).
-  const double f2 = -(Mzi + Mzj) * ch.invL, f3 = (Myi + Myj) * ch.invL;
   const Vec& e2 = ch.e2;
   const Vec& e3 = ch.e3;
   Vec f, m;
+  if (ch.rotated) {
+    // ∂U/∂t at each end: (−T, My_i, Mz_i) and (T, My_j, Mz_j).
+    Vec gi, gj;
+    for (int d = 0; d < 3; ++d) {
+      gi[d] = -T * k.n0[d] + Myi * e2[d] + Mzi * e3[d];
+      gj[d] = T * k.n0[d] + Myj * e2[d] + Mzj * e3[d];
+    }
+    corotLoad(ch.frame, N, gi, gj, f, m);
+    return {f, m, axialKeep};
+  }
+  // Local components on i: force (N, −(Mz_i+Mz_j)/L, (My_i+My_j)/L), moment (T, −My_i, −Mz_i).
+  const double f2 = -(Mzi + Mzj) * ch.invL, f3 = (Myi + Myj) * ch.invL;
   for (int d = 0; d < 3; ++d) {
     f[d] = N * k.n0[d] + f2 * e2[d] + f3 * e3[d];
     m[d] = T * k.n0[d] - Myi * e2[d] - Mzi * e3[d];
   }
-  if (ch.rotated) {
-    f = rotate(ch.frame, f);
-    m = rotate(ch.frame, m);
-  }
   return {f, m, axialKeep};
+}
+
+// The strain energy of the interaction at the damage and plastic stretch held in `state`
+// (null: undamaged), which it leaves alone: elasticForce at that state is minus its gradient
+// (in the small form with respect to the rotation vectors the chord was given).
+inline double elasticEnergy(const Interaction& k, const Chord& ch, const mplm::DamageLaw& law,
+                            const double* state) {
+  const Vec& ti = ch.ti;
+  const Vec& tj = ch.tj;
+  const mplm::Held h = mplm::held(k.kind, ch.da, k.L0, law, state);
+  // ½ N·stretch, ½ T (θ̄x_j − θ̄x_i) and ½ (M_i θ̄_i + M_j θ̄_j) in each bending plane.
+  const double twist = tj[0] - ti[0];
+  return 0.5 * k.ka * h.stretch * h.stretch * h.axialKeep +
+         (0.5 * k.kt * twist * twist + 2 * k.kb * (ti[1] * ti[1] + ti[1] * tj[1] + tj[1] * tj[1]) +
+          2 * k.kb * (ti[2] * ti[2] + ti[2] * tj[2] + tj[2] * tj[2])) *
+             h.bendKeep;
 }
 
 }  // namespace pdq::mplm3d

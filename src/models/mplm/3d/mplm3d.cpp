@@ -1,10 +1,10 @@
 // The micropolar peridynamic lattice model in 3D (thesis §4.2, §4.4.7–4.4.9), registered as
-// "mplm3d": particles on the fcc lattice with six DOFs (u and the rotation vector θ),
+// "mplm3d": particles on the fcc lattice with six DOFs (u and the orientation's turn),
 // interacting with their 12 nearest neighbours as 12 × 12 frame elements and with their 6
 // second-nearest through axial springs (models/mplm/3d/elastic_constants.hpp), damaged by
 // the laws of §4.3.2 shared with the 2D model, damped by eq. 4.21, reinforced by steel bars,
-// and integrated by velocity Verlet in its leapfrog form. Loads ramp linearly to a fraction
-// of the run and are then held, as in 2D.
+// and moved by the engine's integrator (velocity Verlet; the orientation a unit quaternion,
+// Rotation::Spatial; loads and prescribed values follow the engine's load protocol).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -67,6 +67,11 @@ class Mplm3d final : public Model {
         checkSpacing(P, i, j);
         ctx.bonds.add(i, P.gid(j));
       });
+    // Generators leave the orientation zero: the reference orientation.
+    for (std::size_t i = 0; i < P.owned(); ++i) {
+      double* a = P.alter(i);
+      if (a[QW] == 0 && a[QX] == 0 && a[QY] == 0 && a[QZ] == 0) a[QW] = 1;
+    }
     if (par_.dt > 0) ctx.setDt(par_.dt);
   }
 
@@ -110,89 +115,56 @@ class Mplm3d final : public Model {
     Particles& P = ctx.particles;
     Bonds& B = ctx.bonds;
     const long n = static_cast<long>(P.owned());
-    if (corot_) orientations(P);
+    if (!corot_) rotationVectors(P);
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
       const double* a = P.alter(i);
-      double f[6] = {0, 0, 0, 0, 0, 0};
+      Vec f{}, m{}, md{};  // force; elastic and damping moments
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
         const Interaction& k = inter_[b];
         const double* aj = P.alter(k.j);
         const EndLoad e = load(k, a, aj, i, B.attr(b), true);
         for (int d = 0; d < 3; ++d) {
           f[d] += e.f[d] + e.keep * k.c * (aj[VX + d] - a[VX + d]);
-          f[3 + d] += e.m[d] + e.keep * k.cr * (aj[WX + d] - a[WX + d]);
+          m[d] += e.m[d];
+          md[d] += e.keep * k.cr * (aj[WX + d] - a[WX + d]);
         }
       }
-      std::copy_n(f, 6, P.integ(i));
+      // The small form's moments are conjugate to θ = log q: turned into the moment
+      // conjugate to the integrator's turns of q.
+      if (!corot_) m = turnGradient(th_[i], m);
+      double* F = P.integ(i);
+      for (int d = 0; d < 3; ++d) {
+        F[FORCE_X + d] = f[d];
+        F[MOMENT_X + d] = m[d] + md[d];
+      }
     }
   }
 
-  // The hold-phase damping, once computed, continues after a restart.
-  std::vector<double> saveState() const override { return {holdViscous_}; }
-  void loadState(std::span<const double> saved) override {
-    if (saved.size() == 1) holdViscous_ = saved[0];
+  // Translations and the orientation (a unit quaternion) with the angular velocity in the
+  // global frame; supports, bearings and loads from the particle's constraint bits and its
+  // load and displacement columns.
+  Motion motion() const override {
+    Motion m;
+    m.rotation = Rotation::Spatial;
+    m.orientation = {"qw", "qx", "qy", "qz"};
+    m.angularVelocity = {"wx", "wy", "wz"};
+    m.moment = {"mx", "my", "mz"};
+    m.damping = par_.viscous;
+    return m;
   }
-
-  // Leapfrog: v(n+½) = v(n−½) + a(n) Δt, x(n+1) = x(n) + v(n+½) Δt; likewise
-  // ω(n+½) = ω(n−½) + I⁻¹ M(n) Δt and the orientation turns by exp(ω(n+½) Δt)
-  // (models/mplm/3d/rotation.hpp). Constrained DOFs follow their prescribed (ramped) values.
-  // Its own integrator: the orientation is a rotation vector (the engine's keeps a quaternion);
-  // loads follow the engine's load protocol.
-  void integrate(Context& ctx) override {
-    Particles& P = ctx.particles;
-    const double h = ctx.dt();
-    const Loading& L = ctx.loading();
-    const double tNow = static_cast<double>(ctx.step() - 1) * h;
-    const double loadNow = L.factor(tNow);
-    const double dispNext = L.factor(static_cast<double>(ctx.step()) * h);
-    const bool held = L.held(tNow);
-    if (held && L.holdDampingRatio > 0 && holdViscous_ < 0) holdViscous_ = holdDamping(ctx);
-    const double viscous = par_.viscous + (held && holdViscous_ > 0 ? holdViscous_ : 0.0);
-    const long n = static_cast<long>(P.owned());
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      double* a = P.alter(i);
-      const double* X = P.fixed(i);
-      const double* F = P.integ(i);
-      const int fix = constraint_[i];
-      for (int d = 0; d < 3; ++d) {
-        if (fix & (1 << d)) {
-          const double target = X[FX_X + d] + X[DISP_X + d] * dispNext;
-          a[VX + d] = (target - a[AX + d]) / h;
-          a[AX + d] = target;
-        } else {
-          const double acc =
-              (F[FORCE_X + d] + X[LOAD_X + d] * loadNow) / mass_[i] - viscous * a[VX + d];
-          a[VX + d] += acc * h;
-          a[AX + d] += a[VX + d] * h;
-        }
+  void bodies(const Context& ctx, std::span<Body> owned) const override {
+    for (std::size_t i = 0; i < owned.size(); ++i) {
+      const double* X = ctx.particles.fixed(i);
+      Body& b = owned[i];
+      b.mass = mass_[i];
+      b.inertia = inertia_[i];
+      for (int d = 0; d < 6; ++d) {
+        b.load[d] = X[LOAD_X + d];
+        b.value[d] = X[DISP_X + d];
+        if (constraint_[i] & (1 << d)) b.constraint[d] = pdq::Constraint::Prescribed;
       }
-      Vec turn{};
-      for (int d = 0; d < 3; ++d) {
-        if (fix & (8 << d)) {
-          a[WX + d] = 0;  // set below, after the free components turned the particle
-        } else {
-          const double acc =
-              (F[MOMENT_X + d] + X[LOAD_MX + d] * loadNow) / inertia_[i] - viscous * a[WX + d];
-          a[WX + d] += acc * h;
-        }
-        turn[d] = a[WX + d] * h;
-      }
-      const Vec th = logRot(mul(expRot(turn), expRot(rowVec(a, RX))));
-      for (int d = 0; d < 3; ++d) {
-        if (fix & (8 << d)) {
-          const double target = X[DISP_RX + d] * dispNext;
-          a[WX + d] = (target - a[RX + d]) / h;
-          a[RX + d] = target;
-        } else {
-          a[RX + d] = th[d];
-        }
-      }
-      if ((fix & (REST_Y | FIX_Y)) == REST_Y && a[AY] < X[FX_Y]) {
-        a[AY] = X[FX_Y];  // on the support: no penetration, no bounce
-        a[VY] = 0;
-      }
+      if ((constraint_[i] & (REST_Y | FIX_Y)) == REST_Y) b.constraint[1] = pdq::Constraint::Resting;
     }
   }
 
@@ -203,7 +175,7 @@ class Mplm3d final : public Model {
   void field(const Context& ctx, int k, std::span<double> out) const override {
     const Particles& P = ctx.particles;
     const Bonds& B = ctx.bonds;
-    if (k >= 9 && corot_) orientations(P);
+    if (k >= 9 && !corot_) rotationVectors(P);
     for (std::size_t i = 0; i < out.size(); ++i) {
       const double* a = P.alter(i);
       const double* X = P.fixed(i);
@@ -216,7 +188,7 @@ class Mplm3d final : public Model {
       } else if (k <= 5) {
         v = a[AX + k - 3] - X[FX_X + k - 3];
       } else if (k <= 8) {
-        v = a[RX + k - 6];
+        v = logRot(orientation(a))[k - 6];
       } else {
         v = stress(ctx, i)[k - 9];
       }
@@ -231,8 +203,8 @@ class Mplm3d final : public Model {
   }
 
   std::vector<std::string> globals() const override {
-    return {"load_factor", "load_x",     "load_y",     "load_z",  "ux",      "uy",    "uz",
-            "reaction_x",  "reaction_y", "reaction_z", "kinetic", "damaged", "broken"};
+    return {"load_factor", "load_x",     "load_y",     "load_z",  "ux",      "uy",     "uz",
+            "reaction_x",  "reaction_y", "reaction_z", "kinetic", "damaged", "broken", "potential"};
   }
   std::vector<double> globalValues(Context& ctx) override {
     const Particles& P = ctx.particles;
@@ -273,6 +245,7 @@ class Mplm3d final : public Model {
     };
     out.push_back(countBonds(std::numeric_limits<double>::min()));
     out.push_back(countBonds(1.0));
+    out.push_back(potential(ctx));
     return out;
   }
 
@@ -396,26 +369,44 @@ class Mplm3d final : public Model {
   }
 
   // The elastic load of interaction k on particle i (alterable rows a, aj) in the model's
-  // kinematics; the orientations of the co-rotational form come from orientations().
+  // kinematics; the rotation vectors of the small form come from rotationVectors().
   EndLoad load(const Interaction& k, const double* a, const double* aj, std::size_t i,
                double* state, bool update) const {
+    return elasticForce(k, chord(k, a, aj, i), par_.law, state, update);
+  }
+  Chord chord(const Interaction& k, const double* a, const double* aj, std::size_t i) const {
     const Vec r{aj[AX] - a[AX], aj[AY] - a[AY], aj[AZ] - a[AZ]};
-    Chord ch;
-    if (corot_) {
-      ch = corotChord(k, r, q_[i], q_[static_cast<std::size_t>(k.j)]);
-    } else {
-      const Vec d{r[0] - k.r0[0], r[1] - k.r0[1], r[2] - k.r0[2]};
-      ch = smallChord(k, d, rowVec(a, RX), rowVec(aj, RX));
-    }
-    return elasticForce(k, ch, par_.law, state, update);
+    if (corot_) return corotChord(k, r, orientation(a), orientation(aj));
+    const Vec d{r[0] - k.r0[0], r[1] - k.r0[1], r[2] - k.r0[2]};
+    return smallChord(k, d, th_[i], th_[static_cast<std::size_t>(k.j)]);
   }
 
-  // exp(θ) of every local particle (owned and ghosts), once per step.
-  void orientations(const Particles& P) const {
+  // The strain energy of the lattice at its current damage (each interaction is held by
+  // both of its particles: half on each). Its gradient is minus the elastic forces and
+  // moments of force() (moments: with respect to global turns of the orientations).
+  double potential(const Context& ctx) const {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    if (!corot_) rotationVectors(P);
+    return ctx.sumOwned([&](std::size_t i) {
+      double e = 0;
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const Interaction& k = inter_[b];
+        e += 0.5 * elasticEnergy(k, chord(k, P.alter(i), P.alter(k.j), i), par_.law, B.attr(b));
+      }
+      return e;
+    });
+  }
+
+  static Quat orientation(const double* a) { return {a[QW], a[QX], a[QY], a[QZ]}; }
+
+  // The rotation vector θ = log q of every local particle (owned and ghosts), for the small
+  // form, once per step.
+  void rotationVectors(const Particles& P) const {
     const long nl = static_cast<long>(P.local());
-    q_.resize(P.local());
+    th_.resize(P.local());
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < nl; ++i) q_[i] = expRot(rowVec(P.alter(i), RX));
+    for (long i = 0; i < nl; ++i) th_[i] = logRot(orientation(P.alter(i)));
   }
 
   // ω_max of the undamaged lattice in small deformation, six DOFs per particle.
@@ -449,37 +440,6 @@ class Mplm3d final : public Model {
       }
     };
     return pdq::highestFrequency(ctx, sys, restoring, par_.powerIterations);
-  }
-
-  // 2 ζ_h ω₁, ω₁² = F·u / (u·M·u) the Rayleigh quotient of the current deflection under
-  // the held loads; 0 without loads.
-  double holdDamping(Context& ctx) const {
-    const Particles& P = ctx.particles;
-    const double work = ctx.sumOwned([&](std::size_t i) {
-      const double* X = P.fixed(i);
-      const double* a = P.alter(i);
-      double w = 0;
-      for (int d = 0; d < 3; ++d)
-        w += X[LOAD_X + d] * (a[AX + d] - X[FX_X + d]) + X[LOAD_MX + d] * a[RX + d];
-      return ctx.loading().scale * w;
-    });
-    const double inertia = ctx.sumOwned([&](std::size_t i) {
-      const double* X = P.fixed(i);
-      const double* a = P.alter(i);
-      double m = 0;
-      for (int d = 0; d < 3; ++d) {
-        const double u = a[AX + d] - X[FX_X + d];
-        m += mass_[i] * u * u + inertia_[i] * a[RX + d] * a[RX + d];
-      }
-      return m;
-    });
-    if (!(work > 0 && inertia > 0)) return 0;
-    const double omega1 = std::sqrt(work / inertia);
-    if (ctx.root())
-      ctx.log() << "mplm3d: loads held from step " << ctx.step() << "; Rayleigh frequency "
-                << omega1 << " rad/s, hold damping " << 2 * ctx.loading().holdDampingRatio * omega1
-                << " 1/s\n";
-    return 2 * ctx.loading().holdDampingRatio * omega1;
   }
 
   // How the member failed, from its interactions damaged past ω = 0.5: "compression" when
@@ -566,11 +526,10 @@ class Mplm3d final : public Model {
   bool surface_ = true;  // surface_correction
   ElasticConstants k_;
   std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
-  mutable std::vector<Quat> q_;     // orientation per local particle (co-rotational form)
+  mutable std::vector<Vec> th_;     // rotation vector per local particle (small form)
   std::vector<double> mass_, inertia_;
   std::vector<int> constraint_;
   double omegaMax_ = 0;
-  double holdViscous_ = -1;  // hold-phase damping, once computed
 };
 
 PDQ_REGISTER_MODEL(Mplm3d, "mplm3d",

@@ -2,9 +2,12 @@
 // What an MPLM interaction is whatever the lattice's dimension (thesis §4.3, §4.4): which
 // particles interact, of which kind, the steel bars' elastic–perfectly plastic stretch, the
 // stiffness of a steel–concrete link, and the damping of eq. 4.21.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
+
+#include "models/mplm/common/damage.hpp"
 
 namespace pdq::mplm {
 
@@ -41,6 +44,23 @@ inline double plasticStrain(double strain, double plastic, double epsY) {
   if (elastic > epsY) return strain - epsY;
   if (elastic < -epsY) return strain + epsY;
   return plastic;
+}
+
+// What an interaction's strain energy carries at the damage and plastic strain held in
+// `state` (ω_t, ω_c, plastic strain; null: undamaged), for elongation da of a reference
+// length L0: the axial and the bending/torsion factors and the elastic stretch.
+struct Held {
+  double axialKeep, bendKeep, stretch;
+};
+inline Held held(Kind kind, double da, double L0, const DamageLaw& law, const double* state) {
+  Held h{1, 1, da};
+  if (state && kind == Kind::Concrete) {
+    h.bendKeep = 1 - std::max(state[0], state[1]);
+    h.axialKeep = da >= 0 ? h.bendKeep : (law.crushing ? 1 - state[1] : 1.0);
+  } else if (state && kind == Kind::Bar) {
+    h.stretch = da - state[2] * L0;
+  }
+  return h;
 }
 
 // Stiffness of a steel–concrete link of length L from a concrete constant c of a lattice at

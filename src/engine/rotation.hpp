@@ -1,15 +1,14 @@
 #pragma once
-// Finite rotations for the 3D MPLM. A particle's orientation is stored as its rotation
-// vector θ (three numbers, like the other DOFs: they travel in the halo, restart and output
-// as they are, and the small-deformation form uses them directly). Rotations are composed
-// through unit quaternions, never by adding rotation vectors: each step the particle turns
-// by exp(ω Δt) applied to exp(θ) and θ is read back with the logarithm, so rotations of any
-// size stay exact rotations (no drift off the rotation group, no gimbal lock) and θ stays in
-// |θ| ≤ π. Particles are spheres (isotropic inertia), so ω needs no gyroscopic term.
+// Finite rotations in 3D, for the integrator's Rotation::Spatial and the models that use
+// it. An orientation is a unit quaternion; rotations are composed by multiplying
+// quaternions, never by adding rotation vectors, so a rotation of any size stays an exact
+// rotation (no drift off the rotation group, no gimbal lock). The rotation vector θ (axis ×
+// angle) is only formed for a small rotation (an increment ω Δt) or read back for output,
+// with |θ| ≤ π.
 #include <array>
 #include <cmath>
 
-namespace pdq::mplm3d {
+namespace pdq {
 
 using Vec = std::array<double, 3>;
 struct Quat {
@@ -81,4 +80,23 @@ inline Quat normalised(const Quat& q) {
   return {q.w * inv, q.x * inv, q.y * inv, q.z * inv};
 }
 
-}  // namespace pdq::mplm3d
+// The gradient of a function U(θ) of a rotation vector θ = log q with respect to a small
+// global turn of q (q → exp(δφ) q), from its gradient g with respect to θ: J⁻ᵀ g with
+// J⁻¹ = I − ½[θ]× + c [θ]×² the inverse left Jacobian of the rotation group,
+// c = 1/|θ|² − (1 + cos|θ|)/(2|θ| sin|θ|) (by its series for |θ| ≤ 0.1). A moment conjugate
+// to θ becomes the moment conjugate to the turn the integrator applies.
+inline Vec turnGradient(const Vec& th, const Vec& g) {
+  const double t2 = dot(th, th);
+  double c;
+  if (t2 <= 0.01) {
+    c = 1.0 / 12 + t2 * (1.0 / 720 + t2 * (1.0 / 30240 + t2 * (1.0 / 1209600 + t2 / 47900160)));
+  } else {
+    const double t = std::sqrt(t2);
+    c = 1 / t2 - (1 + std::cos(t)) / (2 * t * std::sin(t));
+  }
+  const Vec a = cross(th, g);
+  const Vec b = cross(th, a);
+  return {g[0] + 0.5 * a[0] + c * b[0], g[1] + 0.5 * a[1] + c * b[1], g[2] + 0.5 * a[2] + c * b[2]};
+}
+
+}  // namespace pdq
