@@ -2,21 +2,14 @@
 // The attributes of an MPLM particle and interaction, shared by the model and the
 // generators that fill a ParticleSet for it (src/prep/hexagonal, src/prep/rebar).
 #include "engine/schema.hpp"
+#include "models/mplm/common/attributes.hpp"
 
 namespace pdq::mplm {
 
-// Fixed attributes (never change; sent only when a ghost is created).
+// Fixed attributes (never change; sent only when a ghost is created): the shared ones
+// (models/mplm/common/attributes.hpp), then
 enum Fixed {
-  FX_X = 0,
-  FX_Y,
-  FX_Z,           // reference position
-  MATERIAL,       // Material below
-  BAR,            // steel: which bar (particles of different bars never interact)
-  LINK,           // steel: 1 if bonded to the concrete around it (every other one)
-  AREA,           // steel: bar cross-section A_s (m²)
-  SECOND_MOMENT,  // steel: bar I_s (m⁴)
-  CONSTRAINT,     // bit mask of prescribed DOFs: 1 = u_x, 2 = u_y, 4 = θ_z
-  LOAD_X,
+  LOAD_X = N_SHARED_FIXED,
   LOAD_Y,
   LOAD_M,  // peak external force (N) and moment (N·m) on the particle
   DISP_X,
@@ -29,21 +22,15 @@ enum Fixed {
 enum Alter { AX = 0, AY, AZ, VX, VY, THETA, OMEGA, N_ALTER };
 // Per-step scratch of owned particles.
 enum Integ { FORCE_X = 0, FORCE_Y, MOMENT, N_INTEG };
-// Per-interaction state (each interaction is stored on both particles and evolves alike).
-enum BondAttr { OMEGA_T = 0, OMEGA_C, PLASTIC, N_BOND };
-
-enum Material { CONCRETE = 0, STEEL = 1 };
+// Bits of CONSTRAINT: 1 = u_x, 2 = u_y, 4 = θ_z prescribed.
 // REST_Y: the particle rests on a support (a bearing): it cannot go below its reference
 // Y but may lift off, and the support pushes only (unilateral contact).
 enum Constraint { FIX_X = 1, FIX_Y = 2, FIX_T = 4, REST_Y = 8 };
 
-inline bool isSteel(const double* fixedRow) { return fixedRow[MATERIAL] == double(STEEL); }
-
 inline Schema schema() {
-  return Schema::make({"material", "bar", "link", "area", "second_moment", "constraint", "load_x",
-                       "load_y", "load_m", "disp_x", "disp_y", "disp_t", "monitor"},
-                      {"vx", "vy", "theta", "omega"}, {"fx", "fy", "mz"},
-                      {"omega_t", "omega_c", "plastic"});
+  return Schema::make(
+      fixedNames({"load_x", "load_y", "load_m", "disp_x", "disp_y", "disp_t", "monitor"}),
+      {"vx", "vy", "theta", "omega"}, {"fx", "fy", "mz"}, bondNames());
 }
 
 }  // namespace pdq::mplm

@@ -18,15 +18,11 @@
 #include "models/mplm/2d/attributes.hpp"
 #include "models/mplm/2d/interaction.hpp"
 #include "models/mplm/2d/parameters.hpp"
+#include "models/mplm/common/lattice.hpp"
 #include "models/mplm/common/time_step.hpp"
 
 namespace pdq::mplm {
 namespace {
-
-struct Inertia {
-  std::vector<double> mass, inertia;  // per owned particle
-  std::vector<int> constraint;        // Constraint bits per owned particle
-};
 
 class Mplm2d final : public Model {
  public:
@@ -40,27 +36,21 @@ class Mplm2d final : public Model {
   // stiffnesses are those of a lattice at s.
   void setup(Context& ctx) override {
     if (ctx.dim() != 2) throw InputError("mplm2d", 0, "mplm2d needs a 2D problem (all Z equal)");
-    Particles& P = ctx.particles;
-    for (std::size_t i = 0; i < P.owned(); ++i)
-      ctx.forEachNearby(i, [&](std::size_t j) {
-        if (j == i || !interacts(P.fixed(i), P.fixed(j))) return;
-        checkSpacing(P, i, j);
-        ctx.bonds.add(i, P.gid(j));
-      });
+    const Particles& P = ctx.particles;
+    addInteractions(ctx, [&](std::size_t i, std::size_t j) {
+      if (!interacts(P.fixed(i), P.fixed(j))) return false;
+      checkSpacing(P, i, j);
+      return true;
+    });
     if (par_.dt > 0) ctx.setDt(par_.dt);
   }
 
   void prepare(Context& ctx) override {
     Particles& P = ctx.particles;
     const std::size_t n = P.owned();
-    in_.mass.resize(n);
-    in_.inertia.resize(n);
-    in_.constraint.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      in_.mass[i] = massOf(P.fixed(i));
-      in_.inertia[i] = inertiaOf(P.fixed(i));
-      in_.constraint[i] = static_cast<int>(P.fixed(i)[CONSTRAINT]);
-    }
+    in_.fill(
+        P, [&](const double* f) { return massOf(f); },
+        [&](const double* f) { return inertiaOf(f); });
     inter_.resize(ctx.bonds.count());
     double omegaBond = 0;
     for (std::size_t i = 0; i < n; ++i)
@@ -124,19 +114,7 @@ class Mplm2d final : public Model {
   }
   void bodies(const Context& ctx, std::span<Body> owned) const override {
     constexpr int bit[3] = {FIX_X, FIX_Y, FIX_T};
-    for (std::size_t i = 0; i < owned.size(); ++i) {
-      const double* X = ctx.particles.fixed(i);
-      Body& b = owned[i];
-      b.mass = in_.mass[i];
-      b.inertia = in_.inertia[i];
-      for (int d = 0; d < 3; ++d) {
-        b.load[d] = X[LOAD_X + d];
-        b.value[d] = X[DISP_X + d];
-        if (in_.constraint[i] & bit[d]) b.constraint[d] = pdq::Constraint::Prescribed;
-      }
-      if ((in_.constraint[i] & (REST_Y | FIX_Y)) == REST_Y)
-        b.constraint[1] = pdq::Constraint::Resting;
-    }
+    in_.bodies(ctx.particles, owned, bit, LOAD_X, DISP_X, REST_Y, FIX_Y);
   }
 
   std::vector<std::string> fields() const override {
@@ -186,7 +164,6 @@ class Mplm2d final : public Model {
   }
   std::vector<double> globalValues(Context& ctx) override {
     const Particles& P = ctx.particles;
-    const Bonds& B = ctx.bonds;
     const double lf = ctx.loadFactor();
     auto sum = [&](auto f) { return ctx.sumOwned(f); };
     const double lx = lf * sum([&](std::size_t i) { return P.fixed(i)[LOAD_X]; });
@@ -210,15 +187,6 @@ class Mplm2d final : public Model {
       return 0.5 * in_.mass[i] * (a[VX] * a[VX] + a[VY] * a[VY]) +
              0.5 * in_.inertia[i] * a[OMEGA] * a[OMEGA];
     });
-    auto countBonds = [&](double threshold) {
-      return sum([&](std::size_t i) {
-               double c = 0;
-               for (std::size_t b = B.begin(i); b < B.end(i); ++b)
-                 if (std::max(B.attr(b)[OMEGA_T], B.attr(b)[OMEGA_C]) >= threshold) c += 1;
-               return c;
-             }) /
-             2;
-    };
     const double mean = nMon > 0 ? 1 / nMon : 0.0;
     return {lf,
             lx,
@@ -228,8 +196,8 @@ class Mplm2d final : public Model {
             rx,
             ry,
             ke,
-            countBonds(std::numeric_limits<double>::min()),
-            countBonds(1.0),
+            damagedInteractions(ctx, std::numeric_limits<double>::min()),
+            damagedInteractions(ctx, 1.0),
             potential(ctx)};
   }
 
@@ -237,10 +205,7 @@ class Mplm2d final : public Model {
   double massOf(const double* f) const {
     return isSteel(f) ? par_.steelMass(f[AREA]) : par_.concreteMass();
   }
-  double inertiaOf(const double* f) const {
-    return Parameters::rotationalInertia(massOf(f), par_.s) *
-           (isSteel(f) ? par_.steelRotaryScale : 1.0);
-  }
+  double inertiaOf(const double* f) const { return par_.inertia(massOf(f), isSteel(f)); }
   void checkSpacing(const Particles& P, std::size_t i, std::size_t j) const {
     const double *fi = P.fixed(i), *fj = P.fixed(j);
     if (isSteel(fi) || isSteel(fj)) return;
@@ -356,7 +321,6 @@ class Mplm2d final : public Model {
   // beam: "flexural" when most lie in the middle third between its supports, else "shear".
   std::string failureMode(Context& ctx) const {
     const Particles& P = ctx.particles;
-    const Bonds& B = ctx.bonds;
     double lo = std::numeric_limits<double>::max(), hi = -lo;
     for (std::size_t i = 0; i < P.owned(); ++i)
       if (in_.constraint[i] != 0) {
@@ -366,24 +330,9 @@ class Mplm2d final : public Model {
     lo = ctx.min(lo);
     hi = ctx.max(hi);
     const bool supported = lo <= hi;
-    ExactSum tensile, compressive, middle, all;
-    for (std::size_t i = 0; i < P.owned(); ++i) {
-      if (isSteel(P.fixed(i))) continue;
-      const bool central = std::fabs(P.fixed(i)[FX_X] - (lo + hi) / 2) < (hi - lo) / 6;
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const double* st = B.attr(b);
-        if (std::max(st[OMEGA_T], st[OMEGA_C]) < 0.5) continue;
-        (st[OMEGA_C] >= st[OMEGA_T] ? compressive : tensile).add(1);
-        all.add(1);
-        if (supported && central) middle.add(1);
-      }
-    }
-    const double t = ctx.sum(tensile), c = ctx.sum(compressive), m = ctx.sum(middle);
-    const double total = ctx.sum(all);
-    if (total == 0) return "none";
-    if (c > t) return "compression";
-    if (!supported) return "tension";
-    return m > total / 2 ? "flexural" : "shear";
+    return mplm::failureMode(ctx, supported, [&](std::size_t i) {
+      return supported && std::fabs(P.fixed(i)[FX_X] - (lo + hi) / 2) < (hi - lo) / 6;
+    });
   }
 
   // cos θ and sin θ of every local particle (owned and ghosts), once per step.

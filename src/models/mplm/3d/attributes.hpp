@@ -4,21 +4,16 @@
 // orientation of the particle's triad, a unit quaternion (engine/rotation.hpp; generators
 // leave it zero, which the model reads as the reference orientation).
 #include "engine/schema.hpp"
+#include "models/mplm/common/attributes.hpp"
 
 namespace pdq::mplm3d {
 
-// Fixed attributes (never change; sent only when a ghost is created).
+using namespace mplm::attributes;
+
+// Fixed attributes (never change; sent only when a ghost is created): the shared ones
+// (models/mplm/common/attributes.hpp), then
 enum Fixed {
-  FX_X = 0,
-  FX_Y,
-  FX_Z,           // reference position
-  MATERIAL,       // Material below
-  BAR,            // steel: which bar (particles of different bars never interact)
-  LINK,           // steel: 1 if bonded to the concrete around it (every other one)
-  AREA,           // steel: bar cross-section A_s (m²)
-  SECOND_MOMENT,  // steel: bar I_s (m⁴)
-  CONSTRAINT,     // bit mask of prescribed DOFs (Constraint)
-  LOAD_X,         // peak external force (N), then moment (N·m), on the particle
+  LOAD_X = N_SHARED_FIXED,  // peak external force (N), then moment (N·m), on the particle
   LOAD_Y,
   LOAD_Z,
   LOAD_MX,
@@ -38,10 +33,6 @@ enum Fixed {
 enum Alter { AX = 0, AY, AZ, VX, VY, VZ, QW, QX, QY, QZ, WX, WY, WZ, N_ALTER };
 // Per-step scratch of owned particles: force, then moment.
 enum Integ { FORCE_X = 0, FORCE_Y, FORCE_Z, MOMENT_X, MOMENT_Y, MOMENT_Z, N_INTEG };
-// Per-interaction state (each interaction is stored on both particles and evolves alike).
-enum BondAttr { OMEGA_T = 0, OMEGA_C, PLASTIC, N_BOND };
-
-enum Material { CONCRETE = 0, STEEL = 1 };
 // Bits of CONSTRAINT: bit d (d = 0..5) prescribes DOF d (u_x, u_y, u_z, θ_x, θ_y, θ_z).
 // REST_Y: the particle rests on a bearing: it cannot go below its reference Y but may lift
 // off (unilateral support).
@@ -56,14 +47,12 @@ enum Constraint {
   REST_Y = 64
 };
 
-inline bool isSteel(const double* fixedRow) { return fixedRow[MATERIAL] == double(STEEL); }
-
 inline Schema schema() {
-  return Schema::make({"material", "bar", "link", "area", "second_moment", "constraint", "load_x",
-                       "load_y", "load_z", "load_mx", "load_my", "load_mz", "disp_x", "disp_y",
-                       "disp_z", "disp_rx", "disp_ry", "disp_rz", "monitor"},
-                      {"vx", "vy", "vz", "qw", "qx", "qy", "qz", "wx", "wy", "wz"},
-                      {"fx", "fy", "fz", "mx", "my", "mz"}, {"omega_t", "omega_c", "plastic"});
+  return Schema::make(
+      fixedNames({"load_x", "load_y", "load_z", "load_mx", "load_my", "load_mz", "disp_x", "disp_y",
+                  "disp_z", "disp_rx", "disp_ry", "disp_rz", "monitor"}),
+      {"vx", "vy", "vz", "qw", "qx", "qy", "qz", "wx", "wy", "wz"},
+      {"fx", "fy", "fz", "mx", "my", "mz"}, bondNames());
 }
 
 }  // namespace pdq::mplm3d

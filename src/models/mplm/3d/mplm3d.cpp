@@ -22,6 +22,7 @@
 #include "models/mplm/3d/elastic_constants.hpp"
 #include "models/mplm/3d/interaction.hpp"
 #include "models/mplm/common/interactions.hpp"
+#include "models/mplm/common/lattice.hpp"
 #include "models/mplm/common/parameters.hpp"
 #include "models/mplm/common/time_step.hpp"
 
@@ -61,12 +62,11 @@ class Mplm3d final : public Model {
                        "mplm3d needs a 3D problem (particles spread in X, Y and Z); for a 2D "
                        "particle set use mplm2d");
     Particles& P = ctx.particles;
-    for (std::size_t i = 0; i < P.owned(); ++i)
-      ctx.forEachNearby(i, [&](std::size_t j) {
-        if (j == i || !interacts(P.fixed(i), P.fixed(j))) return;
-        checkSpacing(P, i, j);
-        ctx.bonds.add(i, P.gid(j));
-      });
+    mplm::addInteractions(ctx, [&](std::size_t i, std::size_t j) {
+      if (!interacts(P.fixed(i), P.fixed(j))) return false;
+      checkSpacing(P, i, j);
+      return true;
+    });
     // Generators leave the orientation zero: the reference orientation.
     for (std::size_t i = 0; i < P.owned(); ++i) {
       double* a = P.alter(i);
@@ -78,14 +78,9 @@ class Mplm3d final : public Model {
   void prepare(Context& ctx) override {
     Particles& P = ctx.particles;
     const std::size_t n = P.owned();
-    mass_.resize(n);
-    inertia_.resize(n);
-    constraint_.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      mass_[i] = massOf(P.fixed(i));
-      inertia_[i] = inertiaOf(P.fixed(i));
-      constraint_[i] = static_cast<int>(P.fixed(i)[CONSTRAINT]);
-    }
+    in_.fill(
+        P, [&](const double* f) { return massOf(f); },
+        [&](const double* f) { return inertiaOf(f); });
     inter_.resize(ctx.bonds.count());
     const std::vector<double> surface = surfaceFactors(ctx);
     // Gershgorin bound of the largest eigenvalue of M⁻¹C, C the damping of eq. 4.21.
@@ -98,7 +93,7 @@ class Mplm3d final : public Model {
         gt += 2 * inter_[b].c;
         gr += 2 * inter_[b].cr;
       }
-      gamma = std::max({gamma, gt / mass_[i], gr / inertia_[i]});
+      gamma = std::max({gamma, gt / in_.mass[i], gr / in_.inertia[i]});
     }
     omegaMax_ = highestFrequency(ctx);
     const double c0 = std::sqrt(par_.E / par_.rho);
@@ -154,18 +149,8 @@ class Mplm3d final : public Model {
     return m;
   }
   void bodies(const Context& ctx, std::span<Body> owned) const override {
-    for (std::size_t i = 0; i < owned.size(); ++i) {
-      const double* X = ctx.particles.fixed(i);
-      Body& b = owned[i];
-      b.mass = mass_[i];
-      b.inertia = inertia_[i];
-      for (int d = 0; d < 6; ++d) {
-        b.load[d] = X[LOAD_X + d];
-        b.value[d] = X[DISP_X + d];
-        if (constraint_[i] & (1 << d)) b.constraint[d] = pdq::Constraint::Prescribed;
-      }
-      if ((constraint_[i] & (REST_Y | FIX_Y)) == REST_Y) b.constraint[1] = pdq::Constraint::Resting;
-    }
+    constexpr int bit[6] = {FIX_X, FIX_Y, FIX_Z, FIX_RX, FIX_RY, FIX_RZ};
+    in_.bodies(ctx.particles, owned, bit, LOAD_X, DISP_X, REST_Y, FIX_Y);
   }
 
   std::vector<std::string> fields() const override {
@@ -208,7 +193,6 @@ class Mplm3d final : public Model {
   }
   std::vector<double> globalValues(Context& ctx) override {
     const Particles& P = ctx.particles;
-    const Bonds& B = ctx.bonds;
     const double lf = ctx.loadFactor();
     auto sum = [&](auto f) { return ctx.sumOwned(f); };
     const double nMon = sum([&](std::size_t i) { return P.fixed(i)[MONITOR]; });
@@ -224,27 +208,18 @@ class Mplm3d final : public Model {
     // A resting particle is pushed by its support while it sits on it.
     for (int d = 0; d < 3; ++d)
       out.push_back(sum([&](std::size_t i) {
-        const bool resting = d == 1 && (constraint_[i] & REST_Y) &&
+        const bool resting = d == 1 && (in_.constraint[i] & REST_Y) &&
                              P.alter(i)[AY] <= P.fixed(i)[FX_Y] && P.integ(i)[FORCE_Y] < 0;
-        return (constraint_[i] & (1 << d)) || resting ? monitored(i, -P.integ(i)[FORCE_X + d])
-                                                      : 0.0;
+        return (in_.constraint[i] & (1 << d)) || resting ? monitored(i, -P.integ(i)[FORCE_X + d])
+                                                         : 0.0;
       }));
     out.push_back(sum([&](std::size_t i) {
       const double* a = P.alter(i);
-      return 0.5 * mass_[i] * (a[VX] * a[VX] + a[VY] * a[VY] + a[VZ] * a[VZ]) +
-             0.5 * inertia_[i] * (a[WX] * a[WX] + a[WY] * a[WY] + a[WZ] * a[WZ]);
+      return 0.5 * in_.mass[i] * (a[VX] * a[VX] + a[VY] * a[VY] + a[VZ] * a[VZ]) +
+             0.5 * in_.inertia[i] * (a[WX] * a[WX] + a[WY] * a[WY] + a[WZ] * a[WZ]);
     }));
-    auto countBonds = [&](double threshold) {
-      return sum([&](std::size_t i) {
-               double c = 0;
-               for (std::size_t b = B.begin(i); b < B.end(i); ++b)
-                 if (std::max(B.attr(b)[OMEGA_T], B.attr(b)[OMEGA_C]) >= threshold) c += 1;
-               return c;
-             }) /
-             2;
-    };
-    out.push_back(countBonds(std::numeric_limits<double>::min()));
-    out.push_back(countBonds(1.0));
+    out.push_back(mplm::damagedInteractions(ctx, std::numeric_limits<double>::min()));
+    out.push_back(mplm::damagedInteractions(ctx, 1.0));
     out.push_back(potential(ctx));
     return out;
   }
@@ -254,10 +229,7 @@ class Mplm3d final : public Model {
     return isSteel(f) ? par_.steelMass(f[AREA])
                       : par_.rho * par_.s * par_.s * par_.s / std::sqrt(2.0);
   }
-  double inertiaOf(const double* f) const {
-    return mplm::Parameters::rotationalInertia(massOf(f), par_.s) *
-           (isSteel(f) ? par_.steelRotaryScale : 1.0);
-  }
+  double inertiaOf(const double* f) const { return par_.inertia(massOf(f), isSteel(f)); }
   static double distance(const double* fi, const double* fj) {
     const double dx = fj[FX_X] - fi[FX_X], dy = fj[FX_Y] - fi[FX_Y], dz = fj[FX_Z] - fi[FX_Z];
     return std::sqrt(dx * dx + dy * dy + dz * dz);
@@ -418,8 +390,8 @@ class Mplm3d final : public Model {
     sys.held.resize(6 * n);
     for (std::size_t i = 0; i < n; ++i)
       for (int d = 0; d < 6; ++d) {
-        sys.mass[6 * i + d] = d < 3 ? mass_[i] : inertia_[i];
-        sys.held[6 * i + d] = (constraint_[i] & (1 << d)) != 0;
+        sys.mass[6 * i + d] = d < 3 ? in_.mass[i] : in_.inertia[i];
+        sys.held[6 * i + d] = (in_.constraint[i] & (1 << d)) != 0;
       }
     auto restoring = [&](std::span<const double> u, std::span<double> f) {
       for (std::size_t i = 0; i < n; ++i) {
@@ -449,7 +421,6 @@ class Mplm3d final : public Model {
   // "tension" with no supports.
   std::string failureMode(Context& ctx) const {
     const Particles& P = ctx.particles;
-    const Bonds& B = ctx.bonds;
     constexpr double huge = std::numeric_limits<double>::max();
     double lo = huge, hi = -huge, ylo = huge, yhi = -huge, xlo = huge, xhi = -huge;
     for (std::size_t i = 0; i < P.owned(); ++i) {
@@ -458,7 +429,7 @@ class Mplm3d final : public Model {
       xhi = std::max(xhi, X[FX_X]);
       ylo = std::min(ylo, X[FX_Y]);
       yhi = std::max(yhi, X[FX_Y]);
-      if (constraint_[i] != 0) {
+      if (in_.constraint[i] != 0) {
         lo = std::min(lo, X[FX_X]);
         hi = std::max(hi, X[FX_X]);
       }
@@ -469,27 +440,11 @@ class Mplm3d final : public Model {
     xhi = ctx.max(xhi);
     const double depth = ctx.max(yhi) - ctx.min(ylo);
     const bool supported = lo <= hi, bothEnds = supported && hi - lo > (xhi - xlo) / 2;
-    ExactSum tensile, compressive, critical, all;
-    for (std::size_t i = 0; i < P.owned(); ++i) {
-      if (isSteel(P.fixed(i))) continue;
+    return mplm::failureMode(ctx, supported, [&](std::size_t i) {
       const double x = P.fixed(i)[FX_X];
-      const bool inZone = bothEnds
-                              ? std::fabs(x - (lo + hi) / 2) < (hi - lo) / 6
-                              : supported && std::min(std::fabs(x - lo), std::fabs(x - hi)) < depth;
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const double* st = B.attr(b);
-        if (std::max(st[OMEGA_T], st[OMEGA_C]) < 0.5) continue;
-        (st[OMEGA_C] >= st[OMEGA_T] ? compressive : tensile).add(1);
-        all.add(1);
-        if (inZone) critical.add(1);
-      }
-    }
-    const double t = ctx.sum(tensile), c = ctx.sum(compressive), m = ctx.sum(critical);
-    const double total = ctx.sum(all);
-    if (total == 0) return "none";
-    if (c > t) return "compression";
-    if (!supported) return "tension";
-    return m > total / 2 ? "flexural" : "shear";
+      return bothEnds ? std::fabs(x - (lo + hi) / 2) < (hi - lo) / 6
+                      : supported && std::min(std::fabs(x - lo), std::fabs(x - hi)) < depth;
+    });
   }
 
   // Virial stress of particle i from its elastic interactions (no damping), with the
@@ -527,8 +482,7 @@ class Mplm3d final : public Model {
   ElasticConstants k_;
   std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
   mutable std::vector<Vec> th_;     // rotation vector per local particle (small form)
-  std::vector<double> mass_, inertia_;
-  std::vector<int> constraint_;
+  mplm::Inertia in_;
   double omegaMax_ = 0;
 };
 

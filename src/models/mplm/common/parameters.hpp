@@ -39,6 +39,10 @@ struct Parameters {
   double horizon() const { return horizonFactor * s; }
   double steelMass(double area) const;  // ρ_s A_s s: a bar segment of one spacing
   static double rotationalInertia(double m, double s) { return m * s * s / 10; }  // r = s/2
+  // A particle's rotational inertia, a steel one's scaled by steelRotaryScale.
+  double inertia(double m, bool steel) const {
+    return rotationalInertia(m, s) * (steel ? steelRotaryScale : 1.0);
+  }
 };
 
 }  // namespace pdq::mplm
