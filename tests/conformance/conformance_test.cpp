@@ -121,11 +121,9 @@ density = 176776.69529663686
     for (auto& [name, one] : d) all[name].push_back(one);
     // Elastic, with turns large enough (relative rotations of tenths of a radian, which
     // would break every concrete interaction) that a moment only right to first order in the
-    // rotations fails; and the small form.
+    // rotations fails.
     all["mplm3d"].push_back(
         problem("[model]\nname = \"mplm3d\"\ndamage = false\n" + fcc, 2e-4, 0.2));
-    all["mplm3d"].push_back(problem(
-        "[model]\nname = \"mplm3d\"\ndamage = false\nkinematics = \"small\"\n" + fcc, 2e-4, 0.2));
     return all;
   }();
   return problems;

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/rotation.hpp"
 #include "harness.hpp"
 #include "models/mplm/3d/attributes.hpp"
 #include "prep/fcc.hpp"
@@ -37,11 +38,16 @@ std::vector<double> staticSolution(Simulation& sim, double s) {
       b[6 * i + d] = held[6 * i + d] ? 0.0 : P.fixed(i)[LOAD_X + d];
     }
   auto stiffness = [&](const std::vector<double>& x, std::vector<double>& y) {
-    for (std::size_t i = 0; i < n; ++i)
-      for (int d = 0; d < 3; ++d) {
-        P.alter(i)[AX + d] = P.fixed(i)[FX_X + d] + x[6 * i + d];
-        P.alter(i)[RX + d] = x[6 * i + 3 + d];
-      }
+    for (std::size_t i = 0; i < n; ++i) {
+      double* a = P.alter(i);
+      for (int d = 0; d < 3; ++d) a[AX + d] = P.fixed(i)[FX_X + d] + x[6 * i + d];
+      // The small form reads the rotation vector θ = log q back.
+      const Quat q = expRot({x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]});
+      a[QW] = q.w;
+      a[QX] = q.x;
+      a[QY] = q.y;
+      a[QZ] = q.z;
+    }
     sim.model().force(ctx);
     for (std::size_t k = 0; k < m; ++k) y[k] = held[k] ? 0.0 : -P.integ(k / 6)[k % 6];
   };

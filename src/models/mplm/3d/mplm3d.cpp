@@ -114,24 +114,20 @@ class Mplm3d final : public Model {
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
       const double* a = P.alter(i);
-      Vec f{}, m{}, md{};  // force; elastic and damping moments
+      Vec f{}, m{};
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
         const Interaction& k = inter_[b];
         const double* aj = P.alter(k.j);
         const EndLoad e = load(k, a, aj, i, B.attr(b), true);
         for (int d = 0; d < 3; ++d) {
           f[d] += e.f[d] + e.keep * k.c * (aj[VX + d] - a[VX + d]);
-          m[d] += e.m[d];
-          md[d] += e.keep * k.cr * (aj[WX + d] - a[WX + d]);
+          m[d] += e.m[d] + e.keep * k.cr * (aj[WX + d] - a[WX + d]);
         }
       }
-      // The small form's moments are conjugate to θ = log q: turned into the moment
-      // conjugate to the integrator's turns of q.
-      if (!corot_) m = turnGradient(th_[i], m);
       double* F = P.integ(i);
       for (int d = 0; d < 3; ++d) {
         F[FORCE_X + d] = f[d];
-        F[MOMENT_X + d] = m[d] + md[d];
+        F[MOMENT_X + d] = m[d];
       }
     }
   }
