@@ -151,9 +151,14 @@ void Integrator::ensureBodies(Context& ctx) {
 }
 
 void Integrator::turn(Particles& P, std::size_t i, const double phi[3]) const {
+  // The orientation turns by the increment's quaternion, renormalised against round-off.
   double* a = P.alter(i);
-  double* q[4] = {&a[quat_[0]], &a[quat_[1]], &a[quat_[2]], &a[quat_[3]]};
-  rotate(q, phi);
+  const Quat q = normalised(
+      mul(expRot({phi[0], phi[1], phi[2]}), {a[quat_[0]], a[quat_[1]], a[quat_[2]], a[quat_[3]]}));
+  a[quat_[0]] = q.w;
+  a[quat_[1]] = q.x;
+  a[quat_[2]] = q.y;
+  a[quat_[3]] = q.z;
 }
 
 // The displacement of DOF d of owned particle i from its reference (rotations: the angle,
@@ -252,13 +257,7 @@ void Integrator::step(Context& ctx) {
       }
       phi[k] = a[v] * h;
     }
-    // The orientation turns by the increment's quaternion, renormalised against round-off.
-    const Quat q =
-        normalised(mul(expRot(phi), {a[quat_[0]], a[quat_[1]], a[quat_[2]], a[quat_[3]]}));
-    a[quat_[0]] = q.w;
-    a[quat_[1]] = q.x;
-    a[quat_[2]] = q.y;
-    a[quat_[3]] = q.z;
+    turn(P, i, phi.data());
   }
 }
 
