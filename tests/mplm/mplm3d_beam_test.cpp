@@ -38,18 +38,22 @@ std::vector<double> staticSolution(Simulation& sim, double s) {
       b[6 * i + d] = held[6 * i + d] ? 0.0 : P.fixed(i)[LOAD_X + d];
     }
   auto stiffness = [&](const std::vector<double>& x, std::vector<double>& y) {
+    // The small form reads the rotation vector θ = log q back, which wraps beyond |θ| = π:
+    // K x is taken at x scaled to small turns, where it is linear, and scaled back.
+    double big = 0;
+    for (double v : x) big = std::max(big, std::abs(v));
+    const double scale = big > 0 ? 1e-3 / big : 1.0;
     for (std::size_t i = 0; i < n; ++i) {
       double* a = P.alter(i);
-      for (int d = 0; d < 3; ++d) a[AX + d] = P.fixed(i)[FX_X + d] + x[6 * i + d];
-      // The small form reads the rotation vector θ = log q back.
-      const Quat q = expRot({x[6 * i + 3], x[6 * i + 4], x[6 * i + 5]});
+      for (int d = 0; d < 3; ++d) a[AX + d] = P.fixed(i)[FX_X + d] + scale * x[6 * i + d];
+      const Quat q = expRot({scale * x[6 * i + 3], scale * x[6 * i + 4], scale * x[6 * i + 5]});
       a[QW] = q.w;
       a[QX] = q.x;
       a[QY] = q.y;
       a[QZ] = q.z;
     }
     sim.model().force(ctx);
-    for (std::size_t k = 0; k < m; ++k) y[k] = held[k] ? 0.0 : -P.integ(k / 6)[k % 6];
+    for (std::size_t k = 0; k < m; ++k) y[k] = held[k] ? 0.0 : -P.integ(k / 6)[k % 6] / scale;
   };
   auto dot = [](const std::vector<double>& u, const std::vector<double>& v) {
     double t = 0;
