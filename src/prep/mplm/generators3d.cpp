@@ -9,8 +9,9 @@
 //     layers_along = "z"    # ... and the axis the close-packed layers are stacked along
 //     supports = "clamped"  # clamped | simple | bearings | none
 //     clamped_planes = 2    # clamped: planes of particles held at X = 0
-//     support_width = 0.04  # simple, bearings: bottom particles this close to an end
-//     loading = "tip"       # tip: the last plane at X = length; top: the top face; none
+//     support_width = 0.04  # simple, bearings: bottom-plane particles this close to an end
+//     loading = "tip"       # tip: the last plane at X = length; top: the top plane; none
+// A plane is every particle within one lattice stride of a face (all rows, all layers).
 //     load = 1.0            # tip: total force (N); top: line load (N/m); downward
 #include <algorithm>
 #include <cmath>
@@ -40,17 +41,6 @@ constexpr double big = 1e300;
 int axisOf(const Params& p, const char* key, const std::string& fallback) {
   const std::string a = p.choice(key, fallback, {"x", "y", "z"});
   return a == "x" ? 0 : (a == "y" ? 1 : 2);
-}
-
-// The distinct values of coordinate `axis` (to 1e-6 s), ascending.
-std::vector<double> planes(const ParticleSet& ps, int axis, double s) {
-  std::vector<double> v;
-  for (std::size_t k = 0; k < ps.size(); ++k) v.push_back(ps.fixedRow(k)[axis]);
-  std::sort(v.begin(), v.end());
-  std::vector<double> out;
-  for (double x : v)
-    if (out.empty() || x - out.back() > 1e-6 * s) out.push_back(x);
-  return out;
 }
 
 // Shares a total downward force equally among the particles.
@@ -96,21 +86,29 @@ Generated beam3d(const Params& p, const Schema& schema, const Params& model) {
            keys[a]);
   ParticleSet ps = newParticleSet();
   addConcrete(ps, closePackedFill(lattice, size));
-  const auto xs = planes(ps, 0, s), ys = planes(ps, 1, s);
-  if (supports == "clamped" && static_cast<std::size_t>(clampedPlanes) + 1 >= xs.size())
-    fail(p, "clamped_planes leaves no free particles along the length", "clamped_planes");
-  const double tol = 1e-6 * s, x0 = xs.front(), x1 = xs.back(), y0 = ys.front(), y1 = ys.back();
-  auto at = [&](double v, double c) { return std::fabs(v - c) <= tol; };
-  const auto end = mplm::select(ps, [&](const double* f) { return at(f[0], x1); });
+  // A plane of the lattice normal to an axis: the slab one stride thick (s along the bonds,
+  // (√3/2)s across the rows, √(2/3)s across the layers) that holds one particle of every
+  // row of every layer; the cells fill the box, so the planes start at its faces.
+  const auto& pitch = closePackedMinimumBox(lattice);
+  auto fromLow = [&](const double* f, int axis, double planes) {
+    return f[axis] < planes * pitch[axis];
+  };
+  auto fromHigh = [&](const double* f, int axis, double planes) {
+    return f[axis] > size[axis] - planes * pitch[axis];
+  };
+  if (supports == "clamped" &&
+      static_cast<double>(clampedPlanes + 1) * pitch[0] > length + 1e-9 * s)
+    fail(p, "clamped_planes leaves no free plane of particles along the length",
+         "clamped_planes");
   const auto bottom = [&](bool left) {
     return mplm::select(ps, [&](const double* f) {
-      return at(f[1], y0) &&
-             (left ? f[0] <= x0 + supportWidth + tol : f[0] >= x1 - supportWidth - tol);
+      return fromLow(f, 1, 1) && (left ? f[0] <= supportWidth : f[0] >= length - supportWidth);
     });
   };
   if (supports == "clamped") {
-    const double last = xs[static_cast<std::size_t>(clampedPlanes) - 1];
-    constrain(ps, mplm::select(ps, [&](const double* f) { return f[0] <= last + tol; }), FIX_ALL);
+    const auto held = static_cast<double>(clampedPlanes);
+    constrain(ps, mplm::select(ps, [&](const double* f) { return fromLow(f, 0, held); }),
+              FIX_ALL);
   } else if (supports == "simple") {
     constrain(ps, bottom(true), FIX_X | FIX_Y | FIX_Z);
     constrain(ps, bottom(false), FIX_Y | FIX_Z);
@@ -118,20 +116,21 @@ Generated beam3d(const Params& p, const Schema& schema, const Params& model) {
     const auto left = bottom(true), right = bottom(false);
     constrain(ps, left, REST_Y | FIX_Z);
     constrain(ps, right, REST_Y | FIX_Z);
-    constrain(ps, mplm::select(ps, [&](const double* f) { return at(f[1], y0) && at(f[0], x0); }),
+    constrain(ps, mplm::select(ps, [&](const double* f) {
+                return fromLow(f, 1, 1) && fromLow(f, 0, 1);
+              }),
               FIX_X);
   }
   if (loading == "tip") {
+    const auto end = mplm::select(ps, [&](const double* f) { return fromHigh(f, 0, 1); });
     load3(ps, end, load);
     monitor(ps, end);
   } else if (loading == "top") {
-    const auto top = mplm::select(ps, [&](const double* f) { return at(f[1], y1); });
-    load3(ps, top, load * length);
-    // Midspan bottom: the bottom particles nearest to X = length / 2.
-    double best = big;
-    for (double x : xs) best = std::min(best, std::fabs(x - 0.5 * (x0 + x1)));
+    load3(ps, mplm::select(ps, [&](const double* f) { return fromHigh(f, 1, 1); }),
+          load * length);
+    // Midspan bottom: the bottom plane's particles within half a plane of X = length / 2.
     monitor(ps, mplm::select(ps, [&](const double* f) {
-              return at(f[1], y0) && std::fabs(std::fabs(f[0] - 0.5 * (x0 + x1)) - best) <= tol;
+              return fromLow(f, 1, 1) && std::fabs(f[0] - length / 2) <= pitch[0] / 2;
             }));
   }
   Generated g;
