@@ -50,7 +50,7 @@ double maxForce(Simulation& sim) {
 
 class LjLattice : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(LjLattice, PotentialEnergyPerAtomIsTheDirectLatticeSum) {
+TEST_P(LjLattice, PotentialEnergyAndPressureAreThoseOfTheDirectLatticeSum) {
   Comm comm;
   Melt m;
   m.temperature = 0;
@@ -64,6 +64,17 @@ TEST_P(LjLattice, PotentialEnergyPerAtomIsTheDirectLatticeSum) {
   if (comm.root())
     std::printf("fcc 0.8442, rc 2.5, %s shift: %.12f per atom (direct sum %.12f)\n",
                 m.shift.c_str(), perAtom, expected);
+  // The pressure's virial part: the crystal at rest presses with P = −dE/dV, E(a) the
+  // direct sum's lattice energy and V = a³/4 per atom, by central differences in the
+  // lattice constant (no neighbour shell lies near rc).
+  const double h = 1e-5 * a;
+  const double dEda = (directLatticeSum(a + h, 1, 1, m.cutoff, m.shift) -
+                       directLatticeSum(a - h, 1, 1, m.cutoff, m.shift)) /
+                      (2 * h);
+  const double dEdV = dEda / (0.75 * a * a), pressure = global(*sim, "pressure");
+  EXPECT_NEAR(pressure, -dEdV, 1e-7 * std::fabs(dEdV)) << "shift " << m.shift;
+  EXPECT_GT(std::fabs(dEdV), 0.1);  // a real pressure, not a trivially zero one
+  if (comm.root()) std::printf("  pressure %.12f (-dE/dV %.12f)\n", pressure, -dEdV);
   EXPECT_LT(maxForce(*sim), 1e-11);
   // At rest: the kinetic energy is that of the half-step velocities the zero (to
   // rounding) forces would give.
@@ -100,6 +111,22 @@ TEST_P(LjLattice, EpsilonAndSigmaScaleTheLattice) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Shifts, LjLattice, ::testing::Values("none", "energy", "force"));
+
+// The pressure's kinetic part: atoms too far apart to interact (fcc at density 0.001, nearest
+// neighbours 11.2 apart, beyond rc) are an ideal gas, P V = (N − 1) T (T from the 3N − 3
+// degrees of freedom left after the momentum is removed).
+TEST(LjPressure, DiluteGasIsIdeal) {
+  Comm comm;
+  Melt m;
+  m.density = 0.001;
+  m.temperature = 1.44;
+  auto sim = makeMelt(m, comm);
+  const double n = 4.0 * m.cells * m.cells * m.cells, volume = n / m.density;
+  const double t = global(*sim, "temperature");
+  EXPECT_NEAR(t, m.temperature, 1e-12);
+  EXPECT_NEAR(global(*sim, "pressure"), (n - 1) * t / volume, 1e-12 * t * n / volume);
+  EXPECT_EQ(global(*sim, "potential"), 0.0);  // really no pair within rc
+}
 
 class LjForce : public ::testing::TestWithParam<std::string> {};
 

@@ -1,6 +1,6 @@
 #pragma once
 // The force kernel of one particle: the sum of its Lennard-Jones pair forces (and pair
-// energies) over its Verlet list.
+// energies and virials) over its Verlet list.
 //
 // Two passes. The first walks the list (sorted by global ID) and keeps the pairs closer
 // than rc, in list order, without branches. The second evaluates the pair law on the kept
@@ -31,6 +31,7 @@ struct KernelScratch {
 struct PairSums {
   double f[3];  // force on the particle
   double u;     // sum of its pair energies (Energy only)
+  double w;     // sum of its pair virials r·F(r) = r² F(r)/r (Energy only)
 };
 
 // xi: the particle's position; pos/stride: rows of positions (x, y, z first);
@@ -63,6 +64,7 @@ template <bool ForceShift, bool Energy>
 
   const double f12 = pair.f12, f6 = pair.f6, fc = pair.fc;
   double ax[4] = {0, 0, 0, 0}, ay[4] = {0, 0, 0, 0}, az[4] = {0, 0, 0, 0}, au[4] = {0, 0, 0, 0};
+  double aw[4] = {0, 0, 0, 0};
   for (std::size_t q = 0; q < m; q += 4) {
     for (int l = 0; l < 4; ++l) {
       const double ir2 = 1 / r2[q + l];
@@ -75,6 +77,7 @@ template <bool ForceShift, bool Energy>
       if constexpr (Energy) {
         const double w = q + l < kept ? 1.0 : 0.0;
         au[l] += w * pair.energy(r2[q + l]);
+        aw[l] += w * (fr * r2[q + l]);
       }
     }
   }
@@ -83,13 +86,15 @@ template <bool ForceShift, bool Energy>
   s.f[1] = (ay[0] + ay[1]) + (ay[2] + ay[3]);
   s.f[2] = (az[0] + az[1]) + (az[2] + az[3]);
   s.u = (au[0] + au[1]) + (au[2] + au[3]);
+  s.w = (aw[0] + aw[1]) + (aw[2] + aw[3]);
   return s;
 }
 
 // Forces (rows of three, unless `force` is null) and, if `energy` is not null, half the
-// pair energy sums of particles [first, last), each along its list.
+// pair energy sums and half the pair virial sums (into `virial`) of particles
+// [first, last), each along its list.
 void pairSumsRange(const PairLJ& pair, const double* pos, std::size_t stride,
                    const VerletList& lists, long first, long last, double* force, double* energy,
-                   KernelScratch& scratch);
+                   double* virial, KernelScratch& scratch);
 
 }  // namespace pdq::lj

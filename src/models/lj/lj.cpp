@@ -11,7 +11,7 @@
 //                atomics and the ghosts need no forces sent back.
 //   integration  the engine's velocity Verlet (leapfrog form, engine/integrator.hpp): the
 //                stored velocity is v(0) at step 0 and the half-step v(n-1/2) after.
-//   globals      potential, kinetic and total energy and temperature at the current
+//   globals      potential, kinetic and total energy, temperature and pressure at the current
 //                step n, with the kinetic energy from v(n) = v(n-1/2) + F(n) dt / 2m
 //                (v(0) at step 0), which needs F(n): the globals evaluate the forces at
 //                x(n) once more.
@@ -69,7 +69,7 @@ class LennardJones final : public Model {
   }
 
   std::vector<std::string> globals() const override {
-    return {"potential", "kinetic", "total", "temperature"};
+    return {"potential", "kinetic", "total", "temperature", "pressure"};
   }
   std::vector<double> globalValues(Context& ctx) override {
     Particles& P = ctx.particles;
@@ -87,7 +87,12 @@ class LennardJones final : public Model {
     const long n = ctx.count(static_cast<long>(P.owned()));
     const int d = ctx.dim();
     const double dof = n > 1 ? static_cast<double>(d * (n - 1)) : d;
-    return {pe, ke, pe + ke, 2 * ke / dof};
+    // P = (2 KE + Σ_pairs r·F(r)) / (d V), V the periodic box's volume: LAMMPS's
+    // `thermo pressure` (no tail correction).
+    const double w = ctx.sumOwned([&](std::size_t i) { return virial_[i]; });
+    double volume = 1;
+    for (int a = 0; a < d; ++a) volume *= ctx.domain().length(a);
+    return {pe, ke, pe + ke, 2 * ke / dof, (2 * ke + w) / (d * volume)};
   }
 
  private:
@@ -95,13 +100,15 @@ class LennardJones final : public Model {
 
   // Pair sums of every owned particle at the current positions: forces into `force`
   // (rows of three: the integ table) unless null, and, unless `energy` is null, each
-  // particle's potential energy (half of its pair energies).
+  // particle's potential energy and virial (half of its pair energies and of its pair
+  // virials r·F(r), the latter into virial_).
   void evaluate(const Particles& P, double* force, double* energy) const {
     const long n = static_cast<long>(P.owned());
     if (n == 0) return;
     // Positions packed four to a row (32 bytes, one cache line each), a denser copy of
     // the alterable table for the kernel's scattered reads.
     const long nLocal = static_cast<long>(P.local());
+    if (energy) virial_.resize(n);
     pos_.resize(4 * nLocal);
     scratch_.resize(std::max<std::size_t>(scratch_.size(), omp_get_max_threads()));
 #pragma omp parallel
@@ -112,7 +119,7 @@ class LennardJones final : public Model {
       KernelScratch& scratch = scratch_[t];
       scratch.reserve(lists_.longest());
       pairSumsRange(pair_, pos_.data(), 4, lists_, n * t / nt, n * (t + 1) / nt, force, energy,
-                    scratch);
+                    energy ? virial_.data() : nullptr, scratch);
     }
   }
   static double* forces(Particles& P) { return P.owned() ? P.integ(0) : nullptr; }
@@ -125,6 +132,7 @@ class LennardJones final : public Model {
   std::vector<double> energy_;
   mutable std::vector<KernelScratch> scratch_;  // one per OpenMP thread
   mutable std::vector<double> pos_;             // packed positions for the kernel
+  mutable std::vector<double> virial_;          // per owned particle (globals)
 };
 
 PDQ_REGISTER_MODEL(LennardJones, "lj",
