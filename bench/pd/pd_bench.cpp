@@ -10,6 +10,8 @@
 //                                           the same problem for LAMMPS's PERI package
 //   pd_bench check_cost N STEPS             the block (PMB) with and without the
 //                                           instability check every step: its cost
+//   pd_bench checkpoint_cost N STEPS EVERY  the block (PMB) with and without a checkpoint
+//                                           every EVERY steps: their cost
 //   pd_bench compare FILE_A FILE_B          largest |u_a - u_b| over the largest |u_a|
 //   pd_bench bandwidth                      one core's memory read bandwidth
 #include <mpi.h>
@@ -19,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 #include <string>
@@ -29,6 +32,7 @@
 #include "engine/error.hpp"
 #include "engine/problem.hpp"
 #include "engine/simulation.hpp"
+#include "io/checkpoint.hpp"
 #include "io/standard_outputs.hpp"
 #include "io/thesis_input.hpp"
 #include "lammps_peer.hpp"
@@ -147,29 +151,49 @@ int block(int argc, char** argv, Comm& comm) {
   return 0;
 }
 
-// The instability check's cost: the PMB block run with the check every step and without
+// The cost of the instability check every step (check_cost N STEPS) or of checkpoints
+// every EVERY steps (checkpoint_cost N STEPS EVERY): the PMB block run with it and without
 // it, alternately three times each (the fastest of each counts).
-int checkCost(int argc, char** argv, Comm& comm) {
-  if (argc < 4) throw InputError("pd_bench", 0, "usage: pd_bench check_cost N STEPS");
+int featureCost(int argc, char** argv, Comm& comm) {
+  const bool checkpoints = std::string(argv[1]) == "checkpoint_cost";
+  if (argc < (checkpoints ? 5 : 4))
+    throw InputError("pd_bench", 0,
+                     "usage: pd_bench check_cost N STEPS | checkpoint_cost N STEPS EVERY");
   lammps::Block bl;
   bl.n = std::stoi(argv[2]);
   const long steps = std::stol(argv[3]);
+  const long every = checkpoints ? std::stol(argv[4]) : 0;
+  const std::string dir = checkpoints ? "pd_checkpoint_cost_out" : "pd_check_cost_out";
   double best[2] = {1e300, 1e300};
   for (int round = 0; round < 6; ++round) {
     const int on = round % 2;
     Problem pb = makeProblem("pmb", lammps::blockParams(bl, "pmb"), {});
     pb.particles = lammps::blockParticles(bl, pb.model->schema());
     pb.run.steps = steps;
-    pb.run.checkEvery = on;
-    pb.run.outDir = "pd_check_cost_out";
+    pb.run.outDir = dir;
+    if (!checkpoints) pb.run.checkEvery = on;
+    pb.output.checkpointEvery = every;
+    auto written = std::make_unique<CheckpointOutput>(pb.output, 0);
     const auto simulation = makeSimulation(std::move(pb), comm);
+    if (checkpoints && on) simulation->addOutput(std::move(written));
     best[on] = std::min(best[on], timedRun(*simulation, comm));
   }
-  if (comm.root())
+  if (!comm.root()) return 0;
+  const double cost = 100 * (best[1] - best[0]) / best[0];
+  if (!checkpoints) {
     std::printf(
         "pmb N=%d^3 steps=%ld ranks=%d: without check %.4f s, checked every step %.4f s: "
         "check cost %.2f%% of a step\n",
-        bl.n, steps, comm.size(), best[0], best[1], 100 * (best[1] - best[0]) / best[0]);
+        bl.n, steps, comm.size(), best[0], best[1], cost);
+    return 0;
+  }
+  const long count = steps / every + (steps % every ? 1 : 0);
+  std::printf(
+      "pmb N=%d^3 steps=%ld ranks=%d: without checkpoints %.4f s, with one every %ld steps "
+      "(%ld, %.1f MB each) %.4f s: %.2f s per checkpoint, %.2f%% of the run\n",
+      bl.n, steps, comm.size(), best[0], every, count,
+      static_cast<double>(std::filesystem::file_size(checkpointPath(dir, steps))) / 1e6, best[1],
+      (best[1] - best[0]) / static_cast<double>(count), cost);
   return 0;
 }
 
@@ -214,10 +238,12 @@ int main(int argc, char** argv) {
     const std::string what = argc > 1 ? argv[1] : "";
     if (what == "cantilever") return cantilever(argc, argv, comm);
     if (what == "block") return block(argc, argv, comm);
-    if (what == "check_cost") return checkCost(argc, argv, comm);
+    if (what == "check_cost" || what == "checkpoint_cost") return featureCost(argc, argv, comm);
     if (what == "compare") return comm.root() ? compare(argc, argv) : 0;
     if (what == "bandwidth") return comm.root() ? bandwidth() : 0;
-    std::fprintf(stderr, "usage: pd_bench cantilever|block|check_cost|compare|bandwidth ...\n");
+    std::fprintf(
+        stderr,
+        "usage: pd_bench cantilever|block|check_cost|checkpoint_cost|compare|bandwidth ...\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pd_bench: %s\n", e.what());

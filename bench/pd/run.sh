@@ -55,6 +55,7 @@ done
 echo
 echo "== Instability check (non-finite values, every step) on the PMB block, 1 rank =="
 (cd "$WORK" && "$BENCH" check_cost "$N" 200)
+(cd "$WORK" && "$BENCH" checkpoint_cost "$N" 200 50)
 
 echo
 echo "== Thesis Tables 3.2/3.3: cantilever ${M} x ${D}, monitored particle's final Y =="

@@ -33,7 +33,7 @@ int main(int argc, char** argv) {
     if (sim.particles().fixed(i)[0] < nx / 2 + 1 && sim.particles().fixed(i)[0] > nx / 2 - 1)
       for (std::size_t b = sim.bonds().begin(i); b < sim.bonds().end(i); ++b)
         sim.bonds().attr(b)[0] = 1;
-  pdq::OutputContext oc{sim.context(), sim.model(), comm, dir, 0};
+  pdq::OutputContext oc{sim.context(), sim.model(), comm, dir, 0, 0};
 
   auto time = [&](auto&& f) {
     comm.barrier();

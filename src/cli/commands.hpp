@@ -11,9 +11,11 @@ namespace pdq::cli {
 struct RunOptions {
   std::string input;       // scenario .toml or a folder of the thesis's .dat files
   std::string restart;     // ParticleAlterAttrs.<step>.rst to continue from
+  std::string resume;      // output folder whose newest valid checkpoint to continue from
+  bool force = false;      // resume even from a checkpoint of another scenario or time step
   std::string out;         // output folder (overrides the scenario's)
   long steps = -1;         // last step (overrides the scenario's)
-  double maxWallTime = 0;  // seconds; > 0: stop with restart files before this much wall time
+  double maxWallTime = 0;  // seconds; > 0: stop with a checkpoint before this much wall time
   Verbosity verbosity = Verbosity::Normal;
 };
 // Returns Ok, or Interrupted when a signal or the wall-time limit stopped the run early.
@@ -52,6 +54,8 @@ void plotCommand(const PlotCommandOptions& o);
 struct StrengthCommandOptions {
   std::string input;
   std::vector<std::string> set;  // key=value options of the strength search ([strength] keys)
+  std::string resume;            // output folder whose search (strength/journal.txt) to continue
+  bool force = false;            // even a search of another scenario or with other options
 };
 void strengthCommand(const StrengthCommandOptions& o);
 

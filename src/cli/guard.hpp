@@ -16,7 +16,7 @@ enum Exit : int {
   BadInput = 1,     // an input file or parameter is wrong (the message names file and line)
   BadCommand = 2,   // the command line is wrong
   RunFailed = 3,    // the run failed (unstable, out of memory, a file could not be written)
-  Interrupted = 4,  // stopped early by a signal or --max-wall-time, restart files written
+  Interrupted = 4,  // stopped early by a signal or --max-wall-time, a checkpoint written
 };
 
 class Guard {

@@ -95,12 +95,21 @@ int main(int argc, char** argv) {
   runCmd->add_option(
       "--restart", run.restart,
       "continue from this ParticleAlterAttrs.<step>.rst (with its Bonds.<step>.rst)");
+  auto* resume = runCmd->add_option(
+      "--resume", run.resume,
+      "continue from the newest valid checkpoint in this output folder (and write there)");
+  resume->excludes(runCmd->get_option("--restart"));
+  runCmd
+      ->add_flag("--force", run.force,
+                 "resume even from a checkpoint of another scenario or time step")
+      ->needs(resume);
   runCmd->add_option("--steps", run.steps, "run to this step instead of the scenario's")
       ->check(CLI::Range(0L, 1000000000000L));
-  runCmd->add_option("-o,--out", run.out, "output folder instead of the scenario's");
+  runCmd->add_option("-o,--out", run.out, "output folder instead of the scenario's")
+      ->excludes(resume);
   std::string maxWall;
   runCmd->add_option("--max-wall-time", maxWall,
-                     "stop with restart files before this much wall time (seconds, or e.g. "
+                     "stop with a checkpoint before this much wall time (seconds, or e.g. "
                      "90m, 2h, 1h30m); exit code 4");
   auto* q = runCmd->add_flag("-q,--quiet", quiet, "print only errors");
   runCmd->add_flag("-v,--verbose", verbose, "also print the setup summary and timings")
@@ -151,6 +160,14 @@ int main(int argc, char** argv) {
       "strength", "search the failure load of a scenario (models with a strength spec)");
   strengthCmd->add_option("input", strength.input, "scenario file or .dat folder")->required();
   strengthCmd->add_option("--set", strength.set, "search option key=value (repeatable)");
+  auto* strengthResume = strengthCmd->add_option(
+      "--resume", strength.resume,
+      "continue the search recorded in this output folder (its strength/journal.txt), "
+      "without running its finished trials again");
+  strengthCmd
+      ->add_flag("--force", strength.force,
+                 "resume even a search of another scenario or with other options")
+      ->needs(strengthResume);
   addPlugin(strengthCmd);
 
   InfoOptions info;

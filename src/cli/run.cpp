@@ -9,6 +9,7 @@
 #include "cli/stop.hpp"
 #include "cli/summary.hpp"
 #include "engine/error.hpp"
+#include "io/checkpoint.hpp"
 #include "io/restart.hpp"
 #include "io/standard_outputs.hpp"
 #include "scenario/scenario.hpp"
@@ -20,16 +21,27 @@ int runCommand(const RunOptions& o) {
   Scenario sc = loadScenario(o.input);
   Problem& pb = sc.problem;
   if (!o.out.empty()) pb.run.outDir = o.out;
+  if (!o.resume.empty()) pb.run.outDir = o.resume;
   if (o.steps >= 0) pb.run.steps = o.steps;
+  const std::uint64_t hash = scenarioHash(o.input, pb.particles);
   if (!o.restart.empty()) pb.restart = readRestart(o.restart, pb);
+  if (!o.resume.empty()) {
+    Resumed r = resumeFromCheckpoint(o.resume, hash, o.force, pb);
+    if (comm.root()) {
+      for (const auto& w : r.warnings) printError(w, "pdq: warning: ");
+      if (o.verbosity != Verbosity::Quiet)
+        std::printf("resuming from %s (step %ld)\n", r.path.c_str(), pb.run.firstStep);
+    }
+    pb.restart = std::move(r.state);
+  }
   const double particles = static_cast<double>(pb.particles.size());
   const std::string modelName = pb.modelName;
-  // Every run can be stopped early with its state saved, even one that writes no restart
-  // files of its own.
-  const bool ownRestarts = pb.output.restartEvery > 0 || pb.output.finalRestart;
+  // Checkpoints as the scenario asks, and always one when a signal or the wall-time limit
+  // stops the run.
+  auto checkpoints = std::make_unique<CheckpointOutput>(pb.output, hash);
   const auto simulation = makeSimulation(std::move(pb), comm);
   Simulation& sim = *simulation;
-  if (!ownRestarts) sim.addOutput(std::make_unique<RestartOutput>(0, false));
+  sim.addOutput(std::move(checkpoints));
   StopRequest stopRequest(o.maxWallTime);
   sim.setStopCheck([&] { return stopRequest.poll(); });
   sim.setup();
@@ -51,7 +63,7 @@ int runCommand(const RunOptions& o) {
     if (comm.root())
       printError("stopped at step " + std::to_string(sim.step()) + " by " +
                      StopRequest::describe(sim.stopCode()) + "; continue with: pdq run " + o.input +
-                     " --restart " + restartPath(sim.config().outDir, sim.step()),
+                     " --resume " + sim.config().outDir,
                  "pdq: ");
     return Interrupted;
   }

@@ -1,7 +1,7 @@
 #pragma once
 // Stopping a run early but cleanly: SIGTERM, SIGINT, SIGHUP and SIGUSR1 (what batch
 // systems send before they kill a job) and a wall-time limit. The run stops at the next
-// step boundary, on every rank at the same step, with restart files written there
+// step boundary, on every rank at the same step, with a checkpoint written there
 // (docs/reliability.md). A second signal of the same kind ends pdq at once.
 #include <string>
 

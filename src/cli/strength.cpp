@@ -7,10 +7,11 @@ namespace pdq::cli {
 
 void strengthCommand(const StrengthCommandOptions& o) {
   Comm comm;
-  const Scenario sc = loadScenario(o.input);
+  Scenario sc = loadScenario(o.input);
+  if (!o.resume.empty()) sc.problem.run.outDir = o.resume;
   Params options = sc.strength;  // the scenario's [strength] table, then --set items
   setFromCommandLine(options, o.set);
-  strengthStudy(sc, options, comm);
+  strengthStudy(sc, options, comm, !o.resume.empty(), o.force);
 }
 
 }  // namespace pdq::cli

@@ -1,12 +1,14 @@
 #include "engine/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 #include "engine/error.hpp"
 
@@ -25,14 +27,25 @@ AtomicFile::~AtomicFile() {
   }
 }
 
-void AtomicFile::commit() {
+static bool syncPath(const std::string& path, int flags) {
+  const int fd = ::open(path.c_str(), flags | O_CLOEXEC);
+  if (fd < 0) return false;
+  const bool ok = ::fsync(fd) == 0;
+  ::close(fd);
+  return ok;
+}
+
+void AtomicFile::commit(bool durable) {
+  errno = 0;  // so that a reason given is this write's
   out_.flush();
-  const bool ok = static_cast<bool>(out_);
+  bool ok = static_cast<bool>(out_);
   out_.close();
+  if (ok && durable && !syncPath(tmp_, O_RDONLY)) ok = false;
   if (!ok) {
+    const std::string why = errno ? std::string(": ") + std::strerror(errno) : "";
     std::remove(tmp_.c_str());
     done_ = true;
-    throw Error("error while writing " + path_);
+    throw Error("error while writing " + path_ + why);
   }
   std::error_code ec;
   std::filesystem::rename(tmp_, path_, ec);
@@ -41,6 +54,47 @@ void AtomicFile::commit() {
     std::remove(tmp_.c_str());
     throw Error("cannot rename " + tmp_ + " to " + path_ + ": " + ec.message());
   }
+  if (durable) {
+    std::string dir = std::filesystem::path(path_).parent_path().string();
+    if (!syncPath(dir.empty() ? "." : dir, O_RDONLY | O_DIRECTORY))
+      throw Error("cannot sync the folder of " + path_ + ": " + std::strerror(errno));
+  }
+}
+
+void removeStepFiles(const std::string& dir, const std::string& prefix, const std::string& suffix,
+                     long step) {
+  std::vector<std::filesystem::path> stale;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() + suffix.size() || name.rfind(prefix, 0) != 0 ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
+    const std::string digits =
+        name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    if (digits.size() > 18 || digits.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (step < 0 || std::stol(digits) > step) stale.push_back(it->path());
+  }
+  for (const auto& p : stale) std::filesystem::remove(p, ec);
+}
+
+std::vector<std::string> removeStrayTemporaries(const std::string& dir) {
+  std::vector<std::string> removed;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    const auto at = name.rfind(".tmp.");
+    if (at == std::string::npos || at + 5 == name.size()) continue;
+    const std::string pid = name.substr(at + 5);
+    if (pid.find_first_not_of("0123456789") != std::string::npos || pid.size() > 10) continue;
+    // Only a process that no longer exists left it (kill 0 tests without signalling).
+    const long id = std::stol(pid);
+    if (id <= 0 || id > std::numeric_limits<pid_t>::max()) continue;
+    if (::kill(static_cast<pid_t>(id), 0) == 0 || errno != ESRCH) continue;
+    std::error_code rm;
+    if (std::filesystem::remove(it->path(), rm)) removed.push_back(name);
+  }
+  return removed;
 }
 
 void writeFileAtomically(const std::string& path, const std::string& content) {

@@ -3,8 +3,10 @@
 // the target, which is renamed over it only when complete. Files that grow during a run
 // (time histories, debug.txt) are appended to with one write call per chunk of whole
 // lines, so a run killed at any moment leaves every chunk it wrote, and whole.
+#include <cstdint>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace pdq {
 
@@ -16,7 +18,10 @@ class AtomicFile {
   AtomicFile& operator=(const AtomicFile&) = delete;
 
   std::ofstream& stream() { return out_; }
-  void commit();  // flushes, checks for write errors, renames into place
+  // Flushes, checks for write errors, renames into place. `durable`: the content is on the
+  // disk (fsync) before the rename, and the rename is (fsync of the folder) when it returns,
+  // so a crash of the machine leaves the old file or the new one, never an empty one.
+  void commit(bool durable = false);
   const std::string& path() const { return path_; }
 
  private:
@@ -26,6 +31,16 @@ class AtomicFile {
 };
 
 void writeFileAtomically(const std::string& path, const std::string& content);
+
+// Removes the files in `dir` named `prefix<step>suffix` (the step a whole number, with
+// or without leading zeros) whose step is after `step`, or every one when `step` < 0:
+// outputs of an earlier run in a reused folder, which would look newer than this run's.
+void removeStepFiles(const std::string& dir, const std::string& prefix, const std::string& suffix,
+                     long step);
+
+// Removes the temporaries (`NAME.tmp.PID`) in `dir` of processes no longer running on this
+// machine, which a kill while writing leaves behind; returns their names.
+std::vector<std::string> removeStrayTemporaries(const std::string& dir);
 
 class AppendFile {
  public:

@@ -16,6 +16,7 @@ struct OutputContext {
   Comm& comm;
   const std::string& outDir;
   long step;
+  double setupDt;  // Simulation::setupDt
 };
 
 class Output {
@@ -27,6 +28,11 @@ class Output {
   virtual bool atEnd() const { return false; }
   // True for outputs a run can restart from (the engine shuffles before writing them).
   virtual bool capturesState() const { return false; }
+  // True for an output also written on wall time (checkpoints every T minutes): then
+  // requested() is asked once a step on every rank, and a yes from any rank (combined in
+  // the step's one reduction) makes it due at that step on all of them.
+  virtual bool timed() const { return false; }
+  virtual bool requested() { return false; }
   // Called once on every rank before the first write, at the run's first step; `resumed`:
   // the run continues from a restart file, so files that grow during a run are continued
   // rather than started anew.

@@ -21,7 +21,12 @@ struct OutputSettings {
   bool finalRestart = true;  // also at the last step
   long historyEvery = 0;     // timehist.dat rows for historyIds
   std::vector<Gid> historyIds{};
-  long globalsEvery = 0;               // history.csv: the model's global values
+  long globalsEvery = 0;  // history.csv: the model's global values
+  // `pdq run`'s checkpoints (io/checkpoint.hpp): every N steps and/or T minutes of wall
+  // time (0: neither; a signal or --max-wall-time writes one anyway), the newest K kept.
+  long checkpointEvery = 0;
+  double checkpointMinutes = 0;
+  long checkpointsKept = 2;
   std::unique_ptr<Params> paraview{};  // [output.paraview] table, if any (io/vtu_output.hpp)
   std::unique_ptr<Params> picture{};   // [output.picture] table, if any (post/picture_output.hpp)
 };

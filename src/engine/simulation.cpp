@@ -26,9 +26,10 @@ Simulation::~Simulation() = default;
 
 void Simulation::addOutput(std::unique_ptr<Output> out) {
   if (setUp_) {  // added after setup (a strength trial's): it begins at the current step
-    OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
+    OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_, setupDt_};
     out->begin(oc, resumed_);
   }
+  timedOutputs_ |= out->timed();
   outputs_.push_back(std::move(out));
 }
 
@@ -117,6 +118,7 @@ void Simulation::setup() {
   ctx_->setStep(step_);
   ctx_->setSteps(cfg_.steps);
   model_->setup(*ctx_);
+  setupDt_ = ctx_->dt();
   resumed_ = restart_.has_value();
   if (restart_) {
     // A restart brings its bonds: the saved list replaces what setup built from the
@@ -147,7 +149,8 @@ void Simulation::setup() {
   if (restart_ && restart_->hasState) {
     // The run continues with the time step it had (a model may derive it from the current,
     // damaged, state) and what the integrator and the model kept.
-    ctx_->setDt(restart_->dt);
+    // Forced on with another time step (`adoptDt`): the model's new one.
+    if (!restart_->adoptDt || restart_->setupDt == setupDt_) ctx_->setDt(restart_->dt);
     integrator_->setState(restart_->integrator);
     model_->loadState(restart_->model);
   }
@@ -180,6 +183,10 @@ void Simulation::setup() {
          << dec_->coreHi(2) << "), " << particles_.owned() << " owned, " << particles_.ghosts()
          << " ghosts, " << bonds_.count() << " bonds\n";
   std::filesystem::create_directories(cfg_.outDir);
+  // What a run killed while writing left behind.
+  if (comm_.root())
+    for (const auto& name : removeStrayTemporaries(cfg_.outDir))
+      debug_ << "removed " << name << ", left by a run killed while writing it\n";
   setUp_ = true;
   if (!outputs_.empty()) {
     // Files that grow during the run: a resumed run continues them.
@@ -196,7 +203,7 @@ void Simulation::setup() {
       debugFile_.open(debug);
       if (resumed_) debugFile_.write("# restarted at step " + std::to_string(step_) + "\n");
     }
-    OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
+    OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_, setupDt_};
     for (auto& o : outputs_) o->begin(oc, resumed_);
   }
   writeOutputs(false);
@@ -269,19 +276,26 @@ bool Simulation::advance() {
     Timers::Scope t(timers_, Phase::Integrate);
     model_->integrate(*ctx_);
   }
-  bool saving = false;  // restart files are due at this step
-  for (const auto& o : outputs_)
+  bool saving = false, asked = false;  // restart files are due at this step
+  for (const auto& o : outputs_) {
     saving |= o->capturesState() && (o->due(step_) || (step_ == cfg_.steps && o->atEnd()));
+    if (o->timed()) asked |= o->requested();
+  }
   // Instability is looked for before anything is saved, so no restart file holds it.
   const bool check = (cfg_.checkEvery > 0 && step_ % cfg_.checkEvery == 0) || saving;
   // One reduction a step, when anything needs one: a stop asked for from outside, how far
-  // particles moved since the last shuffle, and the first unstable particle.
+  // particles moved since the last shuffle, the first unstable particle and a timed output
+  // asked for.
   const double none = -std::numeric_limits<double>::infinity();
   std::vector<double> probe{stopCheck_ ? static_cast<double>(stopCheck_()) : 0.0,
                             model_->shuffles() ? cube_->maxDisplacementSinceRebuild() : 0.0,
-                            check ? firstUnstable() : none};
-  if (stopCheck_ || model_->shuffles() || check) probe = comm_.max(probe);
+                            check ? firstUnstable() : none, asked ? 1.0 : 0.0};
+  if (stopCheck_ || model_->shuffles() || check || timedOutputs_) probe = comm_.max(probe);
+  requestedNow_ = probe[3] > 0;
+  // A state saved on time is checked too (in a second reduction: checks were not due).
+  if (requestedNow_ && !check) probe[2] = comm_.max(firstUnstable());
   if (probe[2] > none) reportInstability(static_cast<Gid>(-probe[2]), "");
+  saving |= requestedNow_;
   if (model_->shuffles() && slack_ > 0 && probe[1] > 2 * slack_) {
     // Pairs may have come within the horizon unseen: the step was too violent.
     std::size_t i = 0;
@@ -403,10 +417,11 @@ void Simulation::reportInstability(Gid id, const std::string& what) {
 
 void Simulation::writeOutputs(bool last, bool checkpoint) {
   Timers::Scope t(timers_, Phase::Output);
-  OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
+  OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_, setupDt_};
   bool saved = false;
   for (auto& o : outputs_)
-    if (o->due(step_) || (last && o->atEnd()) || (checkpoint && o->capturesState())) {
+    if (o->due(step_) || (last && o->atEnd()) || (checkpoint && o->capturesState()) ||
+        (requestedNow_ && o->timed())) {
       o->write(oc);
       saved |= o->capturesState();
     }
@@ -418,7 +433,7 @@ void Simulation::finish() {
   if (!setUp_) return;
   {
     Timers::Scope t(timers_, Phase::Output);
-    OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_};
+    OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_, setupDt_};
     for (auto& o : outputs_) o->finish(oc);
   }
   writeLogs();

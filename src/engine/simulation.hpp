@@ -50,6 +50,11 @@ struct RestartState {
   std::vector<double> attrs;  // nBondAttr per bond
   bool hasState = false;      // false: a restart file without its state file
   double dt = 0;
+  // The time step the model set up in the run that wrote it (Simulation::setupDt); with
+  // `adoptDt` (a checkpoint of another scenario resumed by force) a run whose model sets up
+  // another continues with its own.
+  double setupDt = 0;
+  bool adoptDt = false;
   std::vector<double> integrator, model;
 };
 
@@ -89,6 +94,9 @@ class Simulation {
   const StepStats& stats() const { return stats_; }
   const RunConfig& config() const { return cfg_; }
   long step() const { return step_; }
+  // The time step the model chose in Model::setup (from the scenario; 0 when it derives
+  // one later, from the lattice): what a checkpoint records beside the state's own.
+  double setupDt() const { return setupDt_; }
   std::string debugText() const { return debug_.str(); }
 
  private:
@@ -120,7 +128,8 @@ class Simulation {
   std::unique_ptr<Integrator> integrator_;
   StepStats stats_;
   long step_ = 0;
-  double slack_ = 0;
+  double slack_ = 0, setupDt_ = 0;
+  bool timedOutputs_ = false, requestedNow_ = false;
   std::vector<int> forceColumns_;  // the motion's force and moment columns (integ)
   std::function<int()> stopCheck_;
   int stopCode_ = 0;

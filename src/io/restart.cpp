@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -44,23 +45,24 @@ static bool fixedChange(const OutputContext& out) {
   return out.model.shuffles() && (p[0] || p[1] || p[2]);
 }
 
-static void writeRows(const std::string& path, const std::string& header,
-                      const std::vector<double>& rows, int width) {
-  AtomicFile f(path);
-  f.stream() << header;
-  std::string line;
+static std::string rowsText(const std::string& header, const std::vector<double>& rows, int width) {
+  std::string text = header, line;
   for (std::size_t r = 0; r < rows.size() / width; ++r) {
     const double* row = &rows[r * width];
     line = std::to_string(static_cast<Gid>(row[0]));
     for (int c = 1; c < width; ++c) appendNumber(line, row[c]);
-    f.stream() << line << "\n";
+    text += line;
+    text += '\n';
   }
-  f.commit();
+  return text;
 }
 
-void RestartOutput::write(OutputContext& out) {
-  if (out.step == lastWritten_) return;
-  lastWritten_ = out.step;
+RestartNames restartNames(const std::string& dir, long step) {
+  return {restartPath(dir, step), stateRestartPath(dir, step), fixedRestartPath(dir, step),
+          bondRestartPath(dir, step)};
+}
+
+RestartTexts restartTexts(OutputContext& out) {
   const Particles& P = out.ctx.particles;
   const Bonds& B = out.ctx.bonds;
   const Schema& s = P.schema();
@@ -87,54 +89,75 @@ void RestartOutput::write(OutputContext& out) {
       nBondsTotal ? gatherSortedRows(out.comm, brows, 3 + nB, 2) : std::vector<double>{};
   const auto allFixed =
       withFixed ? gatherSortedRows(out.comm, frows, 1 + nF) : std::vector<double>{};
-  if (!out.comm.root()) return;
+  RestartTexts t;
+  t.step = out.step;
+  if (!out.comm.root()) return t;
   std::string line;
   {
-    // Global values, the same on every rank; written before the particle file like the bonds.
-    AtomicFile f(stateRestartPath(out.outDir, out.step));
+    // Global values, the same on every rank.
+    std::string& f = t.state.emplace();
     auto row = [&](const char* key, const std::vector<double>& values) {
       line = key;
       for (double v : values) appendNumber(line, v);
-      f.stream() << line << "\n";
+      f += line + "\n";
     };
-    f.stream() << "# pdq state: step " << out.step << "\n";
+    f += "# pdq state: step " + std::to_string(out.step) + "\n";
     row("dt", {out.ctx.dt()});
     row("integrator", out.ctx.integrator().state());
     row("model", out.model.saveState());
-    f.stream() << "bonds " << nBondsTotal << "\n";  // so a lost or cut bonds file is seen
-    f.commit();
+    f += "bonds " + std::to_string(nBondsTotal) + "\n";  // so a lost or cut bonds file is seen
   }
   if (withFixed) {
     std::string header =
         "# pdq fixed attributes: step " + std::to_string(out.step) + "\n# columns: id";
     for (const auto& n : s.fixed) header += " " + n;
-    writeRows(fixedRestartPath(out.outDir, out.step), header + "\n", allFixed, 1 + nF);
+    t.fixed = rowsText(header + "\n", allFixed, 1 + nF);
   }
-  if (nBondsTotal) {  // bonds first: a particle file always has its bond file beside it
-    AtomicFile f(bondRestartPath(out.outDir, out.step));
-    f.stream() << "# pdq bonds: step " << out.step << "\n# columns: id partner dead";
-    for (const auto& n : s.bond) f.stream() << " " << n;
-    f.stream() << "\n";
+  if (nBondsTotal) {
+    std::string& f = t.bonds.emplace();
+    f = "# pdq bonds: step " + std::to_string(out.step) + "\n# columns: id partner dead";
+    for (const auto& n : s.bond) f += " " + n;
+    f += "\n";
     for (std::size_t r = 0; r < allBonds.size() / (3 + nB); ++r) {
       const double* row = &allBonds[r * (3 + nB)];
       line = std::to_string(static_cast<Gid>(row[0])) + " " +
              std::to_string(static_cast<Gid>(row[1])) + (row[2] != 0 ? " 1" : " 0");
       for (int c = 0; c < nB; ++c) appendNumber(line, row[3 + c]);
-      f.stream() << line << "\n";
+      f += line + "\n";
     }
-    f.commit();
   }
   std::ostringstream header;
   header << "# pdq restart: step " << out.step << " time " << out.ctx.time() << "\n# columns: id";
   for (const auto& n : s.alter) header << " " << n;
-  writeRows(restartPath(out.outDir, out.step), header.str() + "\n", all, 1 + nA);
+  t.particles = rowsText(header.str() + "\n", all, 1 + nA);
+  return t;
 }
 
-static long stepOfHeader(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path, 0, "cannot open the restart file (missing or unreadable)");
-  std::string line;
-  std::getline(in, line);
+void removeRestartFiles(const std::string& dir, long step) {
+  for (const char* kind : {"ParticleAlterAttrs.", "Bonds.", "State.", "ParticleFixedAttrs."})
+    removeStepFiles(dir, kind, ".rst", step);
+}
+
+void RestartOutput::begin(OutputContext& out, bool resumed) {
+  // A reused folder: an earlier run's files after this run's start would look newest.
+  if (out.comm.root()) removeRestartFiles(out.outDir, resumed ? out.step : -1);
+}
+
+void RestartOutput::write(OutputContext& out) {
+  if (out.step == lastWritten_) return;
+  lastWritten_ = out.step;
+  const RestartTexts t = restartTexts(out);
+  if (!out.comm.root()) return;
+  // The particle file last: it always has its state and bond files beside it.
+  const RestartNames n = restartNames(out.outDir, out.step);
+  writeFileAtomically(n.state, *t.state);
+  if (t.fixed) writeFileAtomically(n.fixed, *t.fixed);
+  if (t.bonds) writeFileAtomically(n.bonds, *t.bonds);
+  writeFileAtomically(n.particles, t.particles);
+}
+
+static long stepOfHeader(const std::string& text, const std::string& path) {
+  const std::string line = text.substr(0, text.find('\n'));
   const std::string tag = "# pdq restart: step ";
   if (line.rfind(tag, 0) != 0)
     throw InputError(path, 1, "not a pdq restart file (the first line must be '" + tag + "N ...')");
@@ -145,8 +168,9 @@ static long stepOfHeader(const std::string& path) {
 }
 
 // State.<step>.rst: lines "key value..."; `bonds` gets the bond count (-1: not given).
-static void readState(const std::string& path, RestartState& st, long& bonds) {
-  std::ifstream in(path);
+static void readState(const std::string& text, const std::string& path, RestartState& st,
+                      long& bonds) {
+  std::istringstream in(text);
   std::string line;
   int n = 0;
   bool dt = false;
@@ -187,14 +211,42 @@ static void readState(const std::string& path, RestartState& st, long& bonds) {
   st.hasState = true;
 }
 
+static std::optional<std::string> fileText(const std::string& path) {
+  if (!std::filesystem::exists(path)) return std::nullopt;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, 0, "cannot open the file (unreadable)");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
 RestartState readRestart(const std::string& path, Problem& pb) {
-  const long step = stepOfHeader(path);
+  RestartTexts t;
+  const auto particles = fileText(path);
+  if (!particles) throw InputError(path, 0, "cannot open the restart file (missing or unreadable)");
+  t.particles = *particles;
+  t.step = stepOfHeader(t.particles, path);
+  std::string dir = std::filesystem::path(path).parent_path().string();
+  if (dir.empty()) dir = ".";
+  RestartNames names = restartNames(dir, t.step);
+  names.particles = path;
+  t.state = fileText(names.state);
+  t.fixed = fileText(names.fixed);
+  t.bonds = fileText(names.bonds);
+  return parseRestart(t, names, pb);
+}
+
+RestartState parseRestart(const RestartTexts& t, const RestartNames& names, Problem& pb) {
+  const std::string& path = names.particles;
+  const long step = stepOfHeader(t.particles, path);
+  if (t.step >= 0 && step != t.step)
+    throw InputError(path, 1, "not the particles of step " + std::to_string(t.step));
   const Schema schema = pb.model->schema();
   ParticleSet& ps = pb.particles;
   std::unordered_map<Gid, std::size_t> index;
   for (std::size_t k = 0; k < ps.size(); ++k) index.emplace(ps.gid[k], k);
   std::vector<char> seen(ps.size(), 0);
-  for (const auto& r : readNumberTable(path, 1 + ps.nAlter)) {
+  for (const auto& r : parseNumberTable(t.particles, path, 1 + ps.nAlter)) {
     const Gid id = static_cast<Gid>(r.values[0]);
     auto it = index.find(id);
     if (it == index.end() || static_cast<double>(id) != r.values[0])
@@ -213,21 +265,19 @@ RestartState readRestart(const std::string& path, Problem& pb) {
     throw InputError(path, 1, os.str());
   }
   RestartState bonds;
-  std::string dir = std::filesystem::path(path).parent_path().string();
-  if (dir.empty()) dir = ".";
-  const std::string spath = stateRestartPath(dir, step);
+  const std::string& spath = names.state;
   long bondCount = -1;
-  if (std::filesystem::exists(spath)) readState(spath, bonds, bondCount);
-  const std::string fpath = fixedRestartPath(dir, step);
-  if (std::filesystem::exists(fpath))
-    for (const auto& r : readNumberTable(fpath, 1 + ps.nFixed)) {
+  if (t.state) readState(*t.state, spath, bonds, bondCount);
+  const std::string& fpath = names.fixed;
+  if (t.fixed)
+    for (const auto& r : parseNumberTable(*t.fixed, fpath, 1 + ps.nFixed)) {
       auto it = index.find(static_cast<Gid>(r.values[0]));
       if (it == index.end())
         throw InputError(fpath, r.line, "a particle that is not in the problem");
       std::copy(r.values.begin() + 1, r.values.end(), ps.fixedRow(it->second));
     }
-  const std::string bpath = bondRestartPath(dir, step);
-  if (!std::filesystem::exists(bpath)) {
+  const std::string& bpath = names.bonds;
+  if (!t.bonds) {
     if (bondCount > 0)
       throw InputError(
           bpath, 0,
@@ -235,9 +285,7 @@ RestartState readRestart(const std::string& path, Problem& pb) {
     return bonds;
   }
   {
-    std::ifstream in(bpath);
-    std::string first;
-    std::getline(in, first);
+    const std::string first = t.bonds->substr(0, t.bonds->find('\n'));
     const std::string tag = "# pdq bonds: step " + std::to_string(step);
     if (first != tag)
       throw InputError(
@@ -253,7 +301,7 @@ RestartState readRestart(const std::string& path, Problem& pb) {
           std::string(what) + " " + numberText(v) + " is not a particle of the problem");
     return g;
   };
-  for (const auto& r : readNumberTable(bpath, 3 + nB)) {
+  for (const auto& r : parseNumberTable(*t.bonds, bpath, 3 + nB)) {
     const Gid owner = id(r.values[0], r.line, "owner"),
               partner = id(r.values[1], r.line, "partner");
     if (owner == partner)

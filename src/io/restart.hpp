@@ -10,6 +10,7 @@
 // bonds file that is missing, of another step, cut short (fewer bonds than the state file
 // says), with a self-bond, a one-sided bond, a bond listed twice, an ID not in the problem
 // or a dead flag other than 0 or 1 is an error naming the file and line.
+#include <optional>
 #include <string>
 
 #include "engine/output.hpp"
@@ -22,11 +23,34 @@ std::string restartPath(const std::string& dir, long step);
 std::string bondRestartPath(const std::string& dir, long step);
 std::string stateRestartPath(const std::string& dir, long step);
 
+// The restart state of one step as the text of its files, in memory: what RestartOutput
+// writes as files and a checkpoint (io/checkpoint.hpp) holds in one file. Parts not written
+// at that step (fixed attributes of a non-periodic problem, bonds of a model without) are
+// empty.
+struct RestartTexts {
+  long step = -1;
+  std::optional<std::string> state, fixed, bonds;
+  std::string particles;
+};
+
+// The state at out.step, on rank 0 (nothing elsewhere); collective.
+RestartTexts restartTexts(OutputContext& out);
+
+// What each part is called in messages: its file (RestartOutput's names in a folder).
+struct RestartNames {
+  std::string particles, state, fixed, bonds;
+};
+RestartNames restartNames(const std::string& dir, long step);
+
+// Removes the restart files in `dir` of steps after `step` (every one when `step` < 0).
+void removeRestartFiles(const std::string& dir, long step);
+
 class RestartOutput final : public Output {
  public:
   RestartOutput(long every, bool atEnd) : Output(every), atEnd_(atEnd) {}
   bool atEnd() const override { return atEnd_; }
   bool capturesState() const override { return true; }
+  void begin(OutputContext& out, bool resumed) override;
   void write(OutputContext& out) override;
 
  private:
@@ -39,5 +63,7 @@ class RestartOutput final : public Output {
 // of the companion Bonds.<step>.rst (none if the model has no bonds) and the state of
 // State.<step>.rst, for Simulation::restore.
 RestartState readRestart(const std::string& path, Problem& problem);
+// The same from texts in memory, checked just as strictly.
+RestartState parseRestart(const RestartTexts& texts, const RestartNames& names, Problem& problem);
 
 }  // namespace pdq

@@ -32,7 +32,11 @@ std::vector<TextRecord> readNumberTable(const std::string& path, int columns,
   if (!in) throw InputError(path, 0, "cannot open the file (missing or unreadable)");
   std::stringstream ss;
   ss << in.rdbuf();
-  const std::string text = ss.str();
+  return parseNumberTable(ss.str(), path, columns, columnNames);
+}
+
+std::vector<TextRecord> parseNumberTable(const std::string& text, const std::string& path,
+                                         int columns, const std::string& columnNames) {
   std::vector<TextRecord> out;
   const char* p = text.data();
   const char* end = p + text.size();

@@ -15,6 +15,9 @@ struct TextRecord {
 // Reads every record of `path`; each must have `columns` finite numbers (0: any count).
 std::vector<TextRecord> readNumberTable(const std::string& path, int columns,
                                         const std::string& columnNames = "");
+// The same for `text` already read (`name`: the file named in messages).
+std::vector<TextRecord> parseNumberTable(const std::string& text, const std::string& name,
+                                         int columns, const std::string& columnNames = "");
 
 // The lines of a text file without comments; throws InputError if it cannot be read.
 std::vector<std::pair<int, std::string>> readLines(const std::string& path);

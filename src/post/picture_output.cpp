@@ -4,6 +4,7 @@
 
 #include <tuple>
 
+#include "engine/atomic_file.hpp"
 #include "engine/error.hpp"
 #include "engine/model.hpp"
 
@@ -49,6 +50,11 @@ PictureOutput::PictureOutput(PictureOptions options)
   if (opt_.format != "png" && opt_.format != "svg" && opt_.format != "pdf")
     throw InputError("picture", 0,
                      "unknown picture format '" + opt_.format + "' (use png, svg or pdf)");
+}
+
+void PictureOutput::begin(OutputContext& out, bool resumed) {
+  if (out.comm.root())
+    removeStepFiles(out.outDir, opt_.name + "_", "." + opt_.format, resumed ? out.step : -1);
 }
 
 std::string PictureOutput::fileName(const PictureOptions& o, long step) {

@@ -27,6 +27,8 @@ class PictureOutput final : public Output {
  public:
   explicit PictureOutput(PictureOptions options);
   bool atEnd() const override { return opt_.atEnd; }
+  // Removes an earlier run's pictures after this run's first step (all: started afresh).
+  void begin(OutputContext& out, bool resumed) override;
   void write(OutputContext& out) override;
   // The file of the picture at `step`.
   static std::string fileName(const PictureOptions& options, long step);

@@ -253,9 +253,17 @@ void readOutput(const toml::table& root, const std::string& file, Problem& pb) {
   out.finalRestart = p.flag("final_restart", true);
   out.historyEvery = p.integer("history_every", 0);
   out.globalsEvery = p.integer("globals_every", 0);
-  for (const char* k : {"restart_every", "history_every", "globals_every"})
+  out.checkpointEvery = p.integer("checkpoint_every", 0);
+  out.checkpointMinutes = p.number("checkpoint_minutes", 0.0);
+  out.checkpointsKept = p.integer("checkpoints_kept", 2);
+  for (const char* k : {"restart_every", "history_every", "globals_every", "checkpoint_every"})
     if (p.has(k) && p.integer(k) < 0)
       throw InputError(file, p.raw(k)->line, std::string(k) + " must be >= 0 (0: never)");
+  if (!(out.checkpointMinutes >= 0))
+    throw InputError(file, p.raw("checkpoint_minutes")->line,
+                     "checkpoint_minutes must be >= 0 (0: never)");
+  if (out.checkpointsKept < 1)
+    throw InputError(file, p.raw("checkpoints_kept")->line, "checkpoints_kept must be >= 1");
   if (p.has("history_ids")) {
     std::set<Gid> known(pb.particles.gid.begin(), pb.particles.gid.end());
     const int at = p.raw("history_ids")->line;

@@ -203,7 +203,12 @@ std::vector<Trial> runBatch(const Case& c, const Loading& l, const std::vector<d
   std::vector<char> mine;
   for (std::size_t k = 0; k < loads.size(); ++k) {
     if (static_cast<int>(k % groups) != colour) continue;
-    const Trial t = runTrial(c, l, loads[k], firstIndex + static_cast<int>(k), group, opt);
+    const int index = firstIndex + static_cast<int>(k);
+    const auto was = std::find_if(opt.done.begin(), opt.done.end(), [&](const Trial& t) {
+      return t.index == index && t.load == loads[k];
+    });
+    if (was != opt.done.end()) continue;  // every rank takes it from the journal below
+    const Trial t = runTrial(c, l, loads[k], index, group, opt);
     if (group.root()) pack(t, mine);
   }
   std::vector<char> all;
@@ -213,6 +218,14 @@ std::vector<Trial> runBatch(const Case& c, const Loading& l, const std::vector<d
   for (std::size_t at = 0; at < all.size();) {
     Trial t = unpack(all, at, opt);
     out[t.index - firstIndex] = std::move(t);
+  }
+  for (const Trial& t : opt.done) {
+    const long k = t.index - firstIndex;
+    if (k >= 0 && k < static_cast<long>(loads.size()) && t.load == loads[k]) {
+      out[k] = t;
+      out[k].dir = trialDir(opt, t.index);
+      out[k].fromJournal = true;
+    }
   }
   return out;
 }

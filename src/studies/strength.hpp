@@ -43,6 +43,9 @@ struct Options {
   int atOnce = 1;      // loads tried per round, side by side on groups of ranks
   std::string outDir;  // if set: each trial's history.csv and final restart in outDir/trial_NN
   std::function<void(const struct Trial&)> onTrial;  // called on every rank as trials end
+  // Trials an earlier search finished (its journal): one asked for again, with the same
+  // index and the same load to the bit, is taken from here rather than run.
+  std::vector<struct Trial> done;
 };
 
 // What the trials run: the problem of a scenario with the model's parameters as text, so
@@ -65,6 +68,7 @@ struct Trial {
   long steps = 0;                        // steps run (fewer when stopped as runaway)
   std::string mode;                      // the model's failure classifier, at the end
   std::string dir;                       // its outputs (Options::outDir)
+  bool fromJournal = false;              // taken from Options::done, not run
 };
 
 struct Result {

@@ -8,7 +8,9 @@
 #include "engine/atomic_file.hpp"
 #include "engine/error.hpp"
 #include "engine/model.hpp"
+#include "io/checkpoint.hpp"
 #include "studies/reference.hpp"
+#include "studies/strength_journal.hpp"
 
 namespace pdq {
 
@@ -67,7 +69,7 @@ std::string trialLine(const Trial& t) {
 
 }  // namespace
 
-void strengthStudy(const Scenario& sc, const Params& o, Comm& comm) {
+void strengthStudy(const Scenario& sc, const Params& o, Comm& comm, bool resume, bool force) {
   const Problem& pb = sc.problem;
   const strength::Case c = strengthCase(sc);
   const Reference ref = referenceFor(sc, c.params);
@@ -86,8 +88,13 @@ void strengthStudy(const Scenario& sc, const Params& o, Comm& comm) {
   if (!(hi > lo))
     throw InputError(pb.source, o.raw("hi") ? o.raw("hi")->line : 0, "hi must exceed lo");
   o.checkAllUsed();  // before hours of trials
+  const std::uint64_t search = strength::searchHash(scenarioHash(pb.source, pb.particles), o);
+  const std::string journal = strength::journalPath(dir);
+  if (resume) opt.done = strength::readJournal(journal, search, force);
+  std::vector<Trial> finished;
   if (comm.root()) {
     fs::create_directories(dir);
+    if (!resume) strength::writeJournal(journal, search, finished);
     std::printf("%s", fmt::format("pdq strength: {}, {} particles, {} steps{}; {} load{} per "
                                   "round\n",
                                   pb.source, c.particles.size(), c.run.steps,
@@ -99,7 +106,11 @@ void strengthStudy(const Scenario& sc, const Params& o, Comm& comm) {
   }
   opt.onTrial = [&](const Trial& t) {
     if (!comm.root()) return;
-    std::printf("%s", trialLine(t).c_str());
+    finished.push_back(t);
+    strength::writeJournal(journal, search, finished);
+    std::string line = trialLine(t);
+    if (t.fromJournal) line.insert(line.size() - 1, "  (done before: from journal.txt)");
+    std::printf("%s", line.c_str());
     std::fflush(stdout);
   };
   const strength::Result st = strength::findStrength(c, lo, hi, comm, opt);

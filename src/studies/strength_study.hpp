@@ -4,7 +4,7 @@
 // search's options (docs/scenario.md), [strength.model] the trials' model parameters.
 // Prints each trial as it ends and the result beside the textbook value of the specimen
 // (studies/reference.hpp) and the scenario's `reference`, and writes <output>/strength/:
-// strength.txt (the report), trials.csv, and trial_NN/ with each trial's
+// strength.txt (the report), trials.csv, journal.txt, and trial_NN/ with each trial's
 // load-displacement history and final restart files (for `pdq post picture`).
 #include "engine/comm.hpp"
 #include "engine/params.hpp"
@@ -19,6 +19,10 @@ namespace pdq {
 strength::Case strengthCase(const Scenario& sc);
 
 // `options`: the [strength] table with --set items; unknown ones are errors before any trial.
-void strengthStudy(const Scenario& sc, const Params& options, Comm& comm);
+// Finished trials are recorded in <output>/strength/journal.txt (studies/strength_journal.hpp);
+// `resume` continues the search recorded there without running them again (`force`: even
+// one of another scenario or other options).
+void strengthStudy(const Scenario& sc, const Params& options, Comm& comm, bool resume = false,
+                   bool force = false);
 
 }  // namespace pdq

@@ -7,11 +7,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 extern char** environ;
 
@@ -130,6 +132,44 @@ std::vector<std::string> filesUnder(const std::string& dir) {
     if (e.is_regular_file()) out.push_back(fs::relative(e.path(), dir).string());
   std::sort(out.begin(), out.end());
   return out;
+}
+
+void edit(const std::string& path, const std::string& from, const std::string& to) {
+  std::string text = readFile(path);
+  ASSERT_NE(text.find(from), std::string::npos) << from << " not in " << path;
+  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  writeFile(path, text);
+}
+
+std::vector<long> rowSteps(const std::string& text) {
+  std::vector<long> steps;
+  std::istringstream in(text);
+  std::string line;
+  std::getline(in, line);  // header
+  while (std::getline(in, line)) steps.push_back(std::stol(line));
+  return steps;
+}
+
+long lastRowStep(const std::string& path) {
+  const auto s = rowSteps(readFile(path));
+  return s.empty() ? -1 : s.back();
+}
+
+std::vector<int> children(int pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/task/" + std::to_string(pid) + "/children");
+  std::vector<int> out;
+  for (int c; in >> c;) out.push_back(c);
+  return out;
+}
+
+bool waitFor(const std::function<bool()>& ready, double seconds) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  while (std::chrono::steady_clock::now() < end) {
+    if (ready()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  return false;
 }
 
 }  // namespace pdq::test

@@ -2,6 +2,7 @@
 // Running the real pdq executable (env PDQ_EXE) from a test, alone or under mpirun, with
 // its exit code, standard output and standard error. The child gets the environment
 // without this test's own MPI job variables, so it starts as a job of its own.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -31,5 +32,15 @@ void writeFile(const std::string& path, const std::string& text);
 // Every file under `dir` (relative paths, sorted).
 std::vector<std::string> filesUnder(const std::string& dir);
 std::string sourceDir();  // env PDQ_SOURCE_DIR
+
+// Replaces every `from` in the file by `to` (a test failure if there is none).
+void edit(const std::string& path, const std::string& from, const std::string& to);
+// Steps of the rows of a history file's text (the number before the first ',' or ' ').
+std::vector<long> rowSteps(const std::string& text);
+long lastRowStep(const std::string& path);  // -1: no rows
+// The process ids of a process's children (the ranks under mpirun).
+std::vector<int> children(int pid);
+// Polls `ready` until it is true (true) or `seconds` have passed (false).
+bool waitFor(const std::function<bool()>& ready, double seconds);
 
 }  // namespace pdq::test

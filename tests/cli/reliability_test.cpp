@@ -19,15 +19,6 @@ using testing::HasSubstr;
 
 namespace {
 
-// Replaces every `from` in the file by `to`.
-void edit(const std::string& path, const std::string& from, const std::string& to) {
-  std::string text = readFile(path);
-  ASSERT_NE(text.find(from), std::string::npos) << from << " not in " << path;
-  for (auto at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
-    text.replace(at, from.size(), to);
-  writeFile(path, text);
-}
-
 // The breaking spring lattice for `steps` steps, with rows every 50 steps and restart
 // files every 500 (long enough a run to be killed in the middle).
 std::string longCase(const std::string& dir, long steps) {
@@ -49,40 +40,6 @@ long newestRestart(const std::string& dir) {
     if (std::regex_match(f, m, name)) newest = std::max(newest, std::stol(m[1]));
   }
   return newest;
-}
-
-// Steps of the rows of a history file (the number before the first ',' or ' ').
-std::vector<long> rowSteps(const std::string& text) {
-  std::vector<long> steps;
-  std::istringstream in(text);
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) steps.push_back(std::stol(line));
-  return steps;
-}
-
-long lastRowStep(const std::string& path) {
-  const auto s = rowSteps(readFile(path));
-  return s.empty() ? -1 : s.back();
-}
-
-// The process ids of a process's children (the ranks under mpirun).
-std::vector<int> children(int pid) {
-  std::ifstream in("/proc/" + std::to_string(pid) + "/task/" + std::to_string(pid) + "/children");
-  std::vector<int> out;
-  for (int c; in >> c;) out.push_back(c);
-  return out;
-}
-
-// Waits until `ready()` or `seconds` pass; false on time-out.
-template <class F>
-bool waitFor(F&& ready, double seconds) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < end) {
-    if (ready()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return false;
 }
 
 // Kills a run (one rank killed with SIGKILL; under mpirun the job then ends) once it has
@@ -171,9 +128,9 @@ double secondsSince(std::chrono::steady_clock::time_point t) {
 }
 
 // Starts a long run, sends `sig` once it is stepping (to one rank under mpirun, or to
-// mpirun itself), and checks that pdq stops within 5 s with exit code 4, restart files
-// at the step it names and its histories up to there. With `resume`, the run restarted
-// from them ends with the bits (and histories) of an uninterrupted run.
+// mpirun itself), and checks that pdq stops within 5 s with exit code 4, a checkpoint at
+// the step it names and its histories up to there. With `resume`, the run resumed from it
+// ends with the bits (and histories) of an uninterrupted run.
 void stopBySignal(int ranks, int sig, bool toOneRank, bool resume) {
   const std::string dir = freshDir("signal_np" + std::to_string(ranks) + "_" + std::to_string(sig));
   const std::string sc = longCase(dir, 100000000);
@@ -188,17 +145,16 @@ void stopBySignal(int ranks, int sig, bool toOneRank, bool resume) {
   EXPECT_EQ(r.code, 4) << r.all();
   const long at = stoppedAt(r.err);
   ASSERT_GT(at, 0) << r.all();
-  EXPECT_THAT(r.err, HasSubstr("--restart out/ParticleAlterAttrs." + std::to_string(at) + ".rst"));
-  for (const char* f : {"ParticleAlterAttrs", "Bonds", "State"})
-    EXPECT_TRUE(fs::exists(out + "/" + f + "." + std::to_string(at) + ".rst")) << f;
+  EXPECT_THAT(r.err, HasSubstr("; continue with: pdq run " + sc + " --resume out"));
+  char name[40];
+  std::snprintf(name, sizeof name, "/checkpoint.%012ld.ckpt", at);
+  EXPECT_TRUE(fs::exists(out + name)) << name;
   EXPECT_EQ(lastRowStep(out + "/history.csv"), at / 50 * 50);
   if (!resume) return;
   const std::string end = std::to_string(at + 1000);
   const auto whole = runPdq({"run", sc, "-q", "--steps", end, "--out", "whole"}, dir, ranks);
   ASSERT_EQ(whole.code, 0) << whole.all();
-  const auto resumed = runPdq({"run", sc, "-q", "--steps", end, "--restart",
-                               "out/ParticleAlterAttrs." + std::to_string(at) + ".rst"},
-                              dir, ranks);
+  const auto resumed = runPdq({"run", sc, "-q", "--steps", end, "--resume", "out"}, dir, ranks);
   ASSERT_EQ(resumed.code, 0) << resumed.all();
   for (const std::string& f : {"/ParticleAlterAttrs." + end + ".rst", "/Bonds." + end + ".rst",
                                std::string("/history.csv"), std::string("/timehist.dat")})
@@ -207,7 +163,7 @@ void stopBySignal(int ranks, int sig, bool toOneRank, bool resume) {
 
 }  // namespace
 
-TEST(Reliability, SigtermWritesRestartFilesThatContinueBitwise) {
+TEST(Reliability, SigtermWritesACheckpointThatContinuesBitwise) {
   stopBySignal(0, SIGTERM, false, true);
 }
 TEST(Reliability, SigintSighupSigusr1StopAlike) {
@@ -223,7 +179,7 @@ TEST(Reliability, Sigusr1ToMpirunIsForwardedAndStopsTheJob) {
   stopBySignal(2, SIGUSR1, false, false);
 }
 
-TEST(Reliability, MaxWallTimeStopsBeforeTheLimitWithRestartFiles) {
+TEST(Reliability, MaxWallTimeStopsBeforeTheLimitWithACheckpoint) {
   const std::string dir = freshDir("wall_time");
   const std::string sc = longCase(dir, 100000000);
   const auto started = std::chrono::steady_clock::now();
@@ -234,7 +190,9 @@ TEST(Reliability, MaxWallTimeStopsBeforeTheLimitWithRestartFiles) {
   EXPECT_LT(took, 4.0 + 1.0);  // the process itself stopped before 4 s; this adds its launch
   EXPECT_GT(took, 2.0);
   const long at = stoppedAt(r.err);
-  EXPECT_TRUE(fs::exists(dir + "/out/ParticleAlterAttrs." + std::to_string(at) + ".rst"));
+  char name[40];
+  std::snprintf(name, sizeof name, "/out/checkpoint.%012ld.ckpt", at);
+  EXPECT_TRUE(fs::exists(dir + name)) << name;
   const auto bad = runPdq({"run", sc, "--max-wall-time", "1h30"}, dir);
   EXPECT_EQ(bad.code, 2);
   EXPECT_THAT(bad.err, HasSubstr("--max-wall-time: '1h30' is not a duration"));
