@@ -36,8 +36,20 @@ std::string Progress::line(long step, long firstStep, long lastStep, double dt, 
   return buf;
 }
 
+std::string Progress::loadLine(long step, const LoadStatus& s, double fromFraction,
+                               double seconds) {
+  const double done = s.fraction - fromFraction;
+  const double toGo = done > 0 ? seconds / done * (1 - s.fraction) : NAN;
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "load step %ld  %s (%.0f%%)  %s", step, s.text.c_str(),
+                100 * s.fraction,
+                s.fraction >= 1 ? ("took " + duration(seconds)).c_str()
+                                : (duration(toGo) + " to go").c_str());
+  return buf;
+}
+
 Progress::Progress(bool show, bool terminal, double particles, long firstStep, long lastStep,
-                   double dt)
+                   double dt, std::function<LoadStatus()> status)
     : show_(show),
       terminal_(terminal),
       particles_(particles),
@@ -46,11 +58,20 @@ Progress::Progress(bool show, bool terminal, double particles, long firstStep, l
       last_(lastStep),
       nextLogStep_(firstStep),
       start_(Clock::now()),
-      lastPrint_(start_) {
+      lastPrint_(start_),
+      status_(std::move(status)) {
+  if (status_) {
+    fromFraction_ = status_().fraction;
+    return;  // nothing to tell before the first load step
+  }
   if (show_) print(first_, false);
 }
 
 void Progress::update(long step) {
+  if (show_ && status_) {
+    print(step, false);  // load steps are few and slow: each one is told
+    return;
+  }
   if (!show_ || step >= last_) return;  // finish() prints the last step
   const auto now = Clock::now();
   const double since = std::chrono::duration<double>(now - lastPrint_).count();
@@ -64,8 +85,9 @@ void Progress::finish(long step) {
 
 void Progress::print(long step, bool final) {
   lastPrint_ = Clock::now();
-  const std::string text = line(step, first_, last_, dt_, particles_,
-                                std::chrono::duration<double>(lastPrint_ - start_).count());
+  const double seconds = std::chrono::duration<double>(lastPrint_ - start_).count();
+  const std::string text = status_ ? loadLine(step, status_(), fromFraction_, seconds)
+                                   : line(step, first_, last_, dt_, particles_, seconds);
   if (terminal_) {
     // Rewrite the line in place, padding over a longer previous one.
     std::printf("\r%s%*s", text.c_str(),

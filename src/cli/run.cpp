@@ -54,8 +54,18 @@ int runCommand(const RunOptions& o) {
   // is (OpenMPI does this), so a launched run always writes plain lines.
   const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE");
   const bool terminal = isatty(STDOUT_FILENO) != 0 && !launched;
+  std::function<Progress::LoadStatus()> loadStatus;
+  if (sim.config().solver.quasiStatic)
+    loadStatus = [&sim] {
+      const Simulation::LoadStep& s = sim.lastLoadStep();
+      char text[200];
+      std::snprintf(text, sizeof text,
+                    "load factor %.6g  load %.4g  displacement %.4g  residual %.2g", s.factor,
+                    s.load, s.displacement, s.relative);
+      return Progress::LoadStatus{s.fraction, text};
+    };
   Progress progress(talk, terminal, particles, sim.config().firstStep, sim.config().steps,
-                    sim.context().dt());
+                    sim.context().dt(), loadStatus);
   while (sim.advance()) progress.update(sim.step());
   sim.finish();
   progress.finish(sim.step());

@@ -1,5 +1,6 @@
 #include "engine/integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -53,7 +54,8 @@ Solver readSolver(const Params& p, const std::string& kindKey) {
   const std::string kind = p.choice(kindKey, "dynamic", {"dynamic", "quasi_static"});
   s.quasiStatic = kind == "quasi_static";
   if (const auto where = p.raw(kindKey)) s.line = where->line;
-  for (const char* key : {"tolerance", "max_iterations", "load_steps"})
+  for (const char* key : {"tolerance", "max_iterations", "load_steps", "max_broken",
+                          "max_cut_backs", "control_axis", "control_displacement", "control_ids"})
     if (!s.quasiStatic && p.has(key))
       throw InputError(p.raw(key)->file, p.raw(key)->line,
                        std::string(key) + " is a quasi-static solver parameter; set " + kindKey +
@@ -72,7 +74,53 @@ Solver readSolver(const Params& p, const std::string& kindKey) {
   if (s.loadSteps < 1)
     throw InputError(p.raw("load_steps")->file, p.raw("load_steps")->line,
                      "load_steps must be at least 1");
+  s.maxBroken = p.integer("max_broken", s.maxBroken);
+  if (s.maxBroken < 0)
+    throw InputError(p.raw("max_broken")->file, p.raw("max_broken")->line,
+                     "max_broken must be >= 0 (0: any number of interactions may break in a "
+                     "load step)");
+  const long cuts = p.integer("max_cut_backs", s.maxCutBacks);
+  if (cuts < 0 || cuts > 50)
+    throw InputError(p.raw("max_cut_backs")->file, p.raw("max_cut_backs")->line,
+                     "max_cut_backs must be between 0 and 50 (halvings of the increment)");
+  s.maxCutBacks = static_cast<int>(cuts);
+  s.control = readControl(p, "control_");
+  if (p.has("control_ids")) {
+    const int at = p.raw("control_ids")->line;
+    if (!s.control.active())
+      throw InputError(p.raw("control_ids")->file, at,
+                       "control_ids needs control_axis and control_displacement");
+    for (double v : p.numbers("control_ids")) {
+      if (!(v >= 0 && v <= 9.0e15) || v != static_cast<double>(static_cast<Gid>(v)))
+        throw InputError(
+            p.raw("control_ids")->file, at,
+            "control_ids: " + numberText(v) + " is not a particle's ID (a whole number >= 0)");
+      s.control.ids.push_back(static_cast<Gid>(v));
+    }
+    std::sort(s.control.ids.begin(), s.control.ids.end());
+  } else if (s.control.active() && p.has("control_axis"))
+    throw InputError(p.raw("control_axis")->file, s.control.line,
+                     "the displacement control needs control_ids (the particles it moves)");
   return s;
+}
+
+DisplacementControl readControl(const Params& p, const std::string& prefix) {
+  DisplacementControl c;
+  const std::string axisKey = prefix + "axis", valueKey = prefix + "displacement";
+  if (!p.has(axisKey) && !p.has(valueKey)) return c;
+  const auto where = p.raw(p.has(axisKey) ? axisKey : valueKey);
+  if (!p.has(axisKey) || !p.has(valueKey))
+    throw InputError(where->file, where->line,
+                     "the displacement control needs both " + axisKey + " (x, y or z) and " +
+                         valueKey + " (the peak displacement along it)");
+  const std::string axis = p.choice(axisKey, "x", {"x", "y", "z"});
+  c.axis = axis == "x" ? 0 : axis == "y" ? 1 : 2;
+  c.line = where->line;
+  c.displacement = p.number(valueKey, 0.0);
+  if (c.displacement == 0 || !std::isfinite(c.displacement))
+    throw InputError(p.raw(valueKey)->file, p.raw(valueKey)->line,
+                     valueKey + " must be a nonzero number (the peak displacement)");
+  return c;
 }
 
 std::string writeSolver(const Solver& s) {
@@ -80,7 +128,18 @@ std::string writeSolver(const Solver& s) {
   char buf[160];
   std::snprintf(buf, sizeof buf, "solver quasi_static\ntolerance %.17g\nmax_iterations %ld\n",
                 s.tolerance, s.maxIterations);
-  return std::string(buf) + "load_steps " + std::to_string(s.loadSteps) + "\n";
+  std::string out = std::string(buf) + "load_steps " + std::to_string(s.loadSteps) + "\n";
+  const Solver none;
+  if (s.maxBroken != none.maxBroken) out += "max_broken " + std::to_string(s.maxBroken) + "\n";
+  if (s.maxCutBacks != none.maxCutBacks)
+    out += "max_cut_backs " + std::to_string(s.maxCutBacks) + "\n";
+  if (s.control.active()) {
+    out += std::string("control_axis ") + "xyz"[s.control.axis] + "\ncontrol_displacement " +
+           numberText(s.control.displacement) + "\ncontrol_ids";
+    for (Gid g : s.control.ids) out += " " + std::to_string(g);
+    out += "\n";
+  }
+  return out;
 }
 
 void checkStaticLoading(const Solver& s, const Params& loading) {
@@ -126,14 +185,17 @@ void Integrator::resolve(const Schema& s) {
 
 std::vector<double> Integrator::state() const {
   if (omega2_ < 0) return {holdDamping_};
-  return {holdDamping_, omega2_, iterations_};
+  return {holdDamping_, omega2_, iterations_, path_.progress, path_.increment, path_.easy};
 }
 
 void Integrator::setState(std::span<const double> s) {
-  if (s.size() != 1 && s.size() != 3)
-    throw std::logic_error("integrator state: one or three values expected");
+  if (s.size() != 1 && s.size() != 6)
+    throw std::logic_error("integrator state: one or six values expected");
   holdDamping_ = s[0];
-  if (s.size() == 3) omega2_ = s[1], iterations_ = s[2];
+  if (s.size() == 6) {
+    omega2_ = s[1], iterations_ = s[2];
+    path_ = {s[3], s[4], s[5]};
+  }
 }
 
 void Integrator::ensureBodies(Context& ctx) {

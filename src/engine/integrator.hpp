@@ -61,24 +61,47 @@ struct Loading {
 Loading readLoading(const Params& p);
 std::string writeLoading(const Loading& l);
 
+// Displacement control of the quasi-static solver: the particles `ids` (sorted) have their
+// translation along `axis` prescribed, `displacement` × the load factor, and the reaction
+// (the sum of their internal forces along the control) is the load of the curve.
+struct DisplacementControl {
+  int axis = -1;  // 0, 1, 2 (x, y, z); -1: no displacement control
+  double displacement = 0;
+  std::vector<Gid> ids;
+  int line = 0;  // where the control was given, for its errors
+  bool active() const { return axis >= 0; }
+};
+
 // The solver: explicit dynamics (the default), or quasi-static loading by adaptive dynamic
-// relaxation (engine/relaxation.cpp): the loads × load_scale applied in `loadSteps` equal
-// increments, each relaxed to static equilibrium, i.e. until the out-of-balance force is
-// below `tolerance` × the applied load (or × the reactions when no load is applied).
+// relaxation (engine/relaxation.cpp): the loads and prescribed values × load_scale applied
+// in increments of at most 1/`loadSteps` of it, each relaxed to static equilibrium, i.e.
+// until the out-of-balance force is below `tolerance` × the applied load (or × the
+// reactions when no load is applied). A load step that does not converge, or breaks more
+// than `maxBroken` interactions (0: any number), is tried again with half the increment,
+// at most `maxCutBacks` times in a row; two load steps in a row taken at once double it
+// again (up to 1/`loadSteps`).
 struct Solver {
   bool quasiStatic = false;
   double tolerance = 1e-6;
   long maxIterations = 100000;  // per load step
   long loadSteps = 1;
+  long maxBroken = 0;
+  int maxCutBacks = 10;
+  DisplacementControl control;
   int line = 0;  // of max_iterations (or of the kind) in the run's input, for the error when a
                  // load step does not converge in time
 };
 
 // The solver from the keys `kindKey` ("dynamic" or "quasi_static"), tolerance,
-// max_iterations, load_steps (the scenario's [solver] table with kindKey "kind", or
-// pdQInput.dat with kindKey "solver"); `writeSolver` gives the keys for pdQInput.dat.
+// max_iterations, load_steps, max_broken, max_cut_backs (the scenario's [solver] table with
+// kindKey "kind", or pdQInput.dat with kindKey "solver"); `writeSolver` gives the keys for
+// pdQInput.dat, the displacement control as control_axis, control_displacement and
+// control_ids (read back by readControl; a scenario gives it as [solver.control]).
 Solver readSolver(const Params& p, const std::string& kindKey);
 std::string writeSolver(const Solver& s);
+// The displacement control's axis (x, y or z) and displacement from the keys `prefix`axis
+// and `prefix`displacement (both or neither), its line that of the axis.
+DisplacementControl readControl(const Params& p, const std::string& prefix);
 // InputError (naming the key's line) for a time-based [loading] key under the quasi-static
 // solver, whose run is its load steps.
 void checkStaticLoading(const Solver& s, const Params& loading);
@@ -127,6 +150,15 @@ class Integrator {
   std::vector<double> state() const;
   void setState(std::span<const double> s);
 
+  // Quasi-static: where the load path stands, in units of the largest increment
+  // (1/load_steps of load_scale): the last converged load step's `progress`, the next
+  // increment (a power of 2, at most 1), and the load steps in a row taken at once.
+  // Saved in restart files with the integrator's state.
+  struct LoadPath {
+    double progress = 0, increment = 1, easy = 0;
+  };
+  LoadPath& loadPath() { return path_; }
+
   // Quasi-static: relaxes the owned particles to static equilibrium under the loads and
   // prescribed values × `factor` (the previous load step's factor `previous`), by adaptive
   // dynamic relaxation (engine/relaxation.cpp). `forces` evaluates the model's forces at the
@@ -136,7 +168,9 @@ class Integrator {
     bool converged = true;
     long iterations = 0;
     double residual = 0, reference = 0;  // out-of-balance and applied (or reaction) norms
-    double load = 0, displacement = 0;   // |factor × loads| and the work-conjugate displacement
+    // The curve: |factor × loads| and the work-conjugate displacement; under displacement
+    // control the reaction and the displacement along the control's direction.
+    double load = 0, displacement = 0;
   };
   Relaxed relax(Context& ctx, const Solver& solver, const std::string& source, double factor,
                 double previous, const std::function<void()>& forces,
@@ -168,6 +202,7 @@ class Integrator {
   // load step, and the iterations done so far; both saved in restart files.
   double omega2_ = -1;
   double iterations_ = 0;
+  LoadPath path_;
 };
 
 }  // namespace pdq

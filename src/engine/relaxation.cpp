@@ -97,6 +97,25 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   ensureBodies(ctx);
   const std::size_t n = P.owned();
   const int nd = nT_ + nR_, nLinear = nT_ + (rotation_ == Rotation::Planar ? 1 : 0);
+  // Displacement control: the controlled translation is prescribed (the bodies are asked
+  // for again after a shuffle, so it is set on every call).
+  const DisplacementControl& control = solver.control;
+  std::vector<unsigned char> controlled(n, 0);
+  if (control.active()) {
+    if (control.axis >= nT_)
+      throw InputError(source, control.line,
+                       std::string("the displacement control moves particles along ") +
+                           "xyz"[control.axis] + ", but the model moves them along " +
+                           std::to_string(nT_) + " axes only");
+    for (std::size_t i = 0; i < n; ++i) {
+      if (!std::binary_search(control.ids.begin(), control.ids.end(), P.gid(i))) continue;
+      controlled[i] = 1;
+      bodies_[i].constraint[control.axis] = Constraint::Prescribed;
+      bodies_[i].value[control.axis] = control.displacement;
+    }
+    if (ctx.sumOwned([&](std::size_t i) { return controlled[i] ? 1.0 : 0.0; }) == 0)
+      throw InputError(source, control.line, "the displacement control moves no particle");
+  }
   // The fictitious velocities are the solver's own: the model's stay zero, so no
   // velocity-dependent force (damping) acts on the static state.
   for (std::size_t i = 0; i < n; ++i)
@@ -250,6 +269,15 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     const double total = ctx.sum(sp), work = ctx.sum(su);
     out.load = factor * total;
     out.displacement = total > 0 ? work / total : 0;
+  }
+  if (control.active()) {
+    // The force the control exerts along its direction: minus the internal forces on the
+    // controlled particles (the evaluation at which the load step converged).
+    const double sign = control.displacement > 0 ? 1.0 : -1.0;
+    out.load = -sign * ctx.sumOwned([&](std::size_t i) {
+      return controlled[i] ? dofForce(P, i, control.axis, 0) : 0.0;
+    });
+    out.displacement = std::fabs(control.displacement) * factor;
   }
   return out;
 }

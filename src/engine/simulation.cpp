@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -162,14 +163,30 @@ void Simulation::setup() {
       throw InputError(cfg_.source, cfg_.solver.line,
                        "the quasi-static solver needs a model whose particles keep their "
                        "neighbours; this model's particles move between cells");
-    if (cfg_.steps < 0) cfg_.steps = cfg_.solver.loadSteps;
     if (cfg_.steps > cfg_.solver.loadSteps)
       throw InputError(cfg_.source, cfg_.solver.line,
                        "the run asks for " + std::to_string(cfg_.steps) +
                            " steps but the quasi-static solver has " +
                            std::to_string(cfg_.solver.loadSteps) + " load steps");
+    // The run ends when the load path reaches load_scale (with cut-backs that may take more
+    // load steps than load_steps), or after a fewer number of steps asked for.
+    const Integrator::LoadPath& path = integrator_->loadPath();
+    const double full = static_cast<double>(cfg_.solver.loadSteps);
+    if (path.progress >= full)
+      cfg_.steps = step_;
+    else if (cfg_.steps < 0 || cfg_.steps == cfg_.solver.loadSteps)
+      cfg_.steps = std::numeric_limits<long>::max();
     ctx_->setSteps(cfg_.steps);
-    ctx_->setStaticFactor(staticFactor(step_));
+    ctx_->setStaticFactor(staticFactor(path.progress));
+    last_.fraction = path.progress / full;
+    last_.factor = staticFactor(path.progress);
+    {
+      const StrengthSpec spec = model_->strengthSpec();
+      const auto names = model_->globals();
+      const auto at = std::find(names.begin(), names.end(), spec.damage);
+      brokenGlobal_ =
+          spec.damage.empty() || at == names.end() ? -1 : static_cast<int>(at - names.begin());
+    }
   } else if (cfg_.steps < 0) {
     // The run lasts the load protocol's ramp and hold (a duration within round-off of a
     // whole number of steps takes that number).
@@ -188,6 +205,13 @@ void Simulation::setup() {
     for (const auto& name : removeStrayTemporaries(cfg_.outDir))
       debug_ << "removed " << name << ", left by a run killed while writing it\n";
   setUp_ = true;
+  if (cfg_.solver.quasiStatic && resumed_ && comm_.root()) {
+    // A restarted run continues the curve: the rows up to its restart step.
+    std::ifstream in(cfg_.outDir + "/quasi_static.csv");
+    std::string line;
+    for (bool header = true; std::getline(in, line); header = false)
+      if (header || std::atol(line.c_str()) <= step_) loadSteps_ += line + "\n";
+  }
   if (!outputs_.empty()) {
     // Files that grow during the run: a resumed run continues them.
     if (comm_.root()) {
@@ -209,18 +233,27 @@ void Simulation::setup() {
   writeOutputs(false);
 }
 
-double Simulation::staticFactor(long loadStep) const {
-  return cfg_.loading.scale * static_cast<double>(loadStep) /
-         static_cast<double>(cfg_.solver.loadSteps);
+double Simulation::staticFactor(double progress) const {
+  return cfg_.loading.scale * progress / static_cast<double>(cfg_.solver.loadSteps);
 }
 
-// Quasi-static: step k relaxes load step k (load factor scale × k / load_steps) to
-// equilibrium, logs its iterations and residual and adds its row to quasi_static.csv.
+long Simulation::brokenInteractions() {
+  if (brokenGlobal_ >= 0)
+    return std::lround(model_->globalValues(*ctx_)[static_cast<std::size_t>(brokenGlobal_)]);
+  // A dead bond is listed by both its particles.
+  long dead = 0;
+  for (std::size_t b = 0; b < bonds_.count(); ++b) dead += !bonds_.alive(b);
+  return comm_.sum(dead) / 2;
+}
+
+// Quasi-static: step k relaxes the next load step to equilibrium, trying again with half
+// the increment when it does not converge or breaks more than max_broken interactions;
+// logs its iterations and residual and adds its row to quasi_static.csv. When even the
+// smallest increment finds no equilibrium, the run ends at the last one (a limit point:
+// the peak under force control, a snap-back under displacement control, or a mechanism).
 bool Simulation::relaxLoadStep() {
   ++step_;
   ctx_->setStep(step_);
-  const double factor = staticFactor(step_);
-  ctx_->setStaticFactor(factor);
   auto forces = [&] {
     Timers::Scope t(timers_, Phase::Force);
     model_->force(*ctx_);
@@ -229,30 +262,94 @@ bool Simulation::relaxLoadStep() {
     Timers::Scope t(timers_, Phase::Communication);
     cube_->halo();
   };
-  const Integrator::Relaxed r = integrator_->relax(*ctx_, cfg_.solver, cfg_.source, factor,
-                                                   staticFactor(step_ - 1), forces, exchange);
+  const Solver& solver = cfg_.solver;
+  Integrator::LoadPath& path = integrator_->loadPath();
+  const double full = static_cast<double>(solver.loadSteps);
+  const double previous = staticFactor(path.progress);
+  // The last equilibrium, to try again from.
+  const std::size_t width = static_cast<std::size_t>(particles_.schema().nAlter());
+  const std::vector<double> positions(particles_.alter(0),
+                                      particles_.alter(0) + particles_.local() * width);
+  Bonds::Saved bonds;
+  bonds_.save(bonds);
+  const long brokenBefore = brokenInteractions();
+  Integrator::Relaxed r;
+  double factor = previous;
+  long broken = brokenBefore;
+  for (int cuts = 0;; ++cuts) {
+    const double increment = std::min(path.increment, full - path.progress);
+    factor = staticFactor(path.progress + increment);
+    ctx_->setStaticFactor(factor);
+    r = integrator_->relax(*ctx_, solver, cfg_.source, factor, previous, forces, exchange);
+    broken = brokenInteractions();
+    const bool tooMany = solver.maxBroken > 0 && broken - brokenBefore > solver.maxBroken;
+    if (r.converged && !tooMany) {
+      path.progress += increment;
+      if (cuts == 0 && ++path.easy >= 2 && path.increment < 1)
+        path.increment = std::min(1.0, 2 * path.increment), path.easy = 0;
+      break;
+    }
+    const double relative = r.reference > 0 ? r.residual / r.reference : 0.0;
+    std::ostringstream what;
+    what << "load step " << step_ << " (load factor " << factor << ") ";
+    if (r.converged)
+      what << "broke " << broken - brokenBefore << " interactions, more than max_broken "
+           << solver.maxBroken;
+    else
+      what << "did not converge in " << solver.maxIterations
+           << " iterations: the out-of-balance force is still " << relative
+           << " of the applied load (tolerance " << solver.tolerance << ")";
+    std::copy(positions.begin(), positions.end(), particles_.alter(0));
+    bonds_.restore(bonds);
+    if (cuts < solver.maxCutBacks) {
+      path.increment = increment / 2, path.easy = 0;
+      if (comm_.root()) ctx_->log() << what.str() << "; the increment halved\n";
+      continue;
+    }
+    // No equilibrium even with the smallest increment. Before any has been found and with
+    // nothing broken, the input is at fault (too few iterations, or nothing holds the
+    // structure); otherwise the run ends at its last equilibrium.
+    what << ", with the increment halved " << solver.maxCutBacks << " times";
+    if (path.progress == 0 && broken == brokenBefore)
+      throw InputError(cfg_.source, solver.line,
+                       what.str() +
+                           "; raise max_iterations or use more load_steps (or the "
+                           "structure is a mechanism: check its supports)");
+    ctx_->setStaticFactor(previous);
+    forces();  // the last equilibrium's forces again (its damage is already committed)
+    std::ostringstream reason;
+    reason << "no equilibrium beyond load factor " << previous << ": " << what.str() << ". "
+           << (solver.control.active()
+                   ? "The displacement control cannot follow the curve here (a snap-back: "
+                     "the load-displacement curve turns back) or the structure became a "
+                     "mechanism"
+                   : "The structure has passed its peak load (a limit point under force "
+                     "control; displacement control follows the descending branch) or became "
+                     "a mechanism")
+           << "; or max_iterations is too small";
+    ctx_->requestStop(reason.str());
+    return endStep(false);
+  }
   const double relative = r.reference > 0 ? r.residual / r.reference : 0.0;
+  last_ = {path.progress / full, factor, r.load, r.displacement, relative, r.iterations, broken};
   if (comm_.root()) {
     ctx_->log() << "load step " << step_ << ": load factor " << factor << ", " << r.iterations
                 << " iterations, residual " << r.residual << " (" << relative
-                << " of the applied load)" << (r.converged ? "" : ", not converged") << "\n";
+                << " of the applied load), " << broken << " broken interactions\n";
     if (loadSteps_.empty())
       loadSteps_ =
-          "load_step,load_factor,iterations,residual,reference,relative,load,displacement\n";
+          "load_step,load_factor,iterations,residual,reference,relative,load,displacement,"
+          "broken\n";
     std::ostringstream row;
     row << step_ << "," << numberText(factor) << "," << r.iterations << ","
         << numberText(r.residual) << "," << numberText(r.reference) << "," << numberText(relative)
-        << "," << numberText(r.load) << "," << numberText(r.displacement) << "\n";
+        << "," << numberText(r.load) << "," << numberText(r.displacement) << "," << broken << "\n";
     loadSteps_ += row.str();
     writeFileAtomically(cfg_.outDir + "/quasi_static.csv", loadSteps_);
   }
-  if (!r.converged) {
-    std::ostringstream os;
-    os << "load step " << step_ << " (load factor " << factor << ") did not converge in "
-       << cfg_.solver.maxIterations << " iterations: the out-of-balance force is still " << relative
-       << " of the applied load (tolerance " << cfg_.solver.tolerance
-       << "); raise max_iterations or use more load_steps";
-    throw InputError(cfg_.source, cfg_.solver.line, os.str());
+  if (path.progress >= full) {
+    cfg_.steps = step_;
+    ctx_->setSteps(step_);
   }
   // A stop asked for from outside ends the run at this load step, as at a time step.
   stopCode_ = stopCheck_ && step_ < cfg_.steps

@@ -99,6 +99,15 @@ class Simulation {
   double setupDt() const { return setupDt_; }
   std::string debugText() const { return debug_.str(); }
 
+  // Quasi-static: the last converged load step (the fraction of load_scale reached, the
+  // load factor, the curve's load and displacement, the relative residual, the iterations
+  // and the broken interactions).
+  struct LoadStep {
+    double fraction = 0, factor = 0, load = 0, displacement = 0, relative = 0;
+    long iterations = 0, broken = 0;
+  };
+  const LoadStep& lastLoadStep() const { return last_; }
+
  private:
   Domain makeDomain() const;
   void writeOutputs(bool last, bool checkpoint = false);
@@ -107,7 +116,8 @@ class Simulation {
   void writeLogs();  // debug.txt (appended) and timing.out (rewritten); collective
   bool relaxLoadStep();
   bool endStep(bool interrupted);
-  double staticFactor(long loadStep) const;
+  double staticFactor(double progress) const;
+  long brokenInteractions();  // collective
 
   std::unique_ptr<Model> model_;
   ParticleSet initial_;
@@ -135,6 +145,8 @@ class Simulation {
   int stopCode_ = 0;
   bool setUp_ = false, ended_ = false, resumed_ = false;
   std::string loadSteps_;  // quasi_static.csv so far (rank 0)
+  int brokenGlobal_ = -1;  // the model's global counting broken interactions, or -1: dead bonds
+  LoadStep last_;
 };
 
 }  // namespace pdq

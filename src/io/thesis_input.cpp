@@ -189,6 +189,13 @@ Problem readThesisInput(const std::string& dir) {
                          "; neighbours would be missed");
   pb.particles = readParticleFiles(dir + "/ParticleFixedAttrs.dat", dir + "/ParticleAlterAttrs.dat",
                                    pb.model->schema());
+  if (!pb.run.solver.control.ids.empty()) {
+    const std::unordered_set<Gid> ids(pb.particles.gid.begin(), pb.particles.gid.end());
+    for (Gid g : pb.run.solver.control.ids)
+      if (!ids.count(g))
+        throw InputError(input, engine.raw("control_ids")->line,
+                         "control_ids: " + std::to_string(g) + " is not a particle's ID");
+  }
   if (!pb.output.historyIds.empty()) {
     const std::unordered_set<Gid> ids(pb.particles.gid.begin(), pb.particles.gid.end());
     for (Gid g : pb.output.historyIds)

@@ -7,20 +7,8 @@
 
 namespace pdq {
 
-Assignment readAssignment(const Params& p, const std::string& file, int line) {
-  Assignment a;
-  a.file = file;
-  a.line = line;
-  a.attribute = p.text("attribute");
-  a.attributeLine = p.raw("attribute")->line;
-  a.value = p.number("value", 0.0);
-  if (p.has("gradient")) {
-    const auto g = p.numbers("gradient");
-    if (g.size() != 3)
-      throw InputError(file, p.raw("gradient")->line,
-                       "gradient needs 3 numbers (per unit X, Y, Z)");
-    std::copy(g.begin(), g.end(), a.gradient.begin());
-  }
+Selection readSelection(const Params& p, const std::string& file) {
+  Selection a;
   const char* axes[3] = {"x", "y", "z"};
   for (int k = 0; k < 3; ++k) {
     if (!p.has(axes[k])) continue;
@@ -37,6 +25,39 @@ Assignment readAssignment(const Params& p, const std::string& file, int line) {
       a.ids.push_back(static_cast<Gid>(v));
     }
   std::sort(a.ids.begin(), a.ids.end());
+  return a;
+}
+
+bool Selection::selects(const double* X, Gid id) const {
+  bool in = ids.empty() || std::binary_search(ids.begin(), ids.end(), id);
+  for (int d = 0; d < 3 && in; ++d)
+    if (range[d]) in = X[d] >= range[d]->first && X[d] <= range[d]->second;
+  return in;
+}
+
+std::vector<Gid> Selection::selected(const ParticleSet& ps) const {
+  std::vector<Gid> out;
+  for (std::size_t k = 0; k < ps.size(); ++k)
+    if (selects(ps.fixedRow(k), ps.gid[k])) out.push_back(ps.gid[k]);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+Assignment readAssignment(const Params& p, const std::string& file, int line) {
+  Assignment a;
+  a.file = file;
+  a.line = line;
+  a.attribute = p.text("attribute");
+  a.attributeLine = p.raw("attribute")->line;
+  a.value = p.number("value", 0.0);
+  if (p.has("gradient")) {
+    const auto g = p.numbers("gradient");
+    if (g.size() != 3)
+      throw InputError(file, p.raw("gradient")->line,
+                       "gradient needs 3 numbers (per unit X, Y, Z)");
+    std::copy(g.begin(), g.end(), a.gradient.begin());
+  }
+  a.where = readSelection(p, file);
   p.checkAllUsed();
   return a;
 }
@@ -61,10 +82,7 @@ void applyAssignments(ParticleSet& ps, const Schema& schema,
     std::size_t selected = 0;
     for (std::size_t k = 0; k < ps.size(); ++k) {
       const double* X = ps.fixedRow(k);
-      bool in = a.ids.empty() || std::binary_search(a.ids.begin(), a.ids.end(), ps.gid[k]);
-      for (int d = 0; d < 3 && in; ++d)
-        if (a.range[d]) in = X[d] >= a.range[d]->first && X[d] <= a.range[d]->second;
-      if (!in) continue;
+      if (!a.where.selects(X, ps.gid[k])) continue;
       const double v = a.value + a.gradient[0] * X[0] + a.gradient[1] * X[1] + a.gradient[2] * X[2];
       if (fixedCol >= 0)
         ps.fixedRow(k)[fixedCol] = v;

@@ -17,13 +17,25 @@
 
 namespace pdq {
 
+// Particles selected by reference-position ranges and/or IDs (also the quasi-static
+// solver's displacement control, [solver.control]).
+struct Selection {
+  std::array<std::optional<std::pair<double, double>>, 3> range;
+  std::vector<Gid> ids;  // sorted; empty: any ID
+  bool selects(const double* X, Gid id) const;
+  // The IDs of the particles selected, sorted.
+  std::vector<Gid> selected(const ParticleSet& particles) const;
+};
+
+// Reads the selection keys x, y, z (ranges) and ids of an entry.
+Selection readSelection(const Params& entry, const std::string& file);
+
 struct Assignment {
   std::string attribute;
   double value = 0;
   std::array<double, 3> gradient{0, 0, 0};
-  std::array<std::optional<std::pair<double, double>>, 3> range;
-  std::vector<Gid> ids;  // empty: any ID
-  std::string file;      // where the entry was written
+  Selection where;
+  std::string file;  // where the entry was written
   int line = 0, attributeLine = 0;
 };
 

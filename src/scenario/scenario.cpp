@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <set>
 
 #include "engine/error.hpp"
@@ -324,9 +325,27 @@ Scenario readScenario(const std::string& path) {
   pb.run.loading = readLoading(loading);
   loading.checkAllUsed();
   const toml::table* st = subTable(root, "solver", path);
-  const Params solver = st ? tableParams(*st, path, "[solver]") : Params("[solver]");
+  const Params solver = st ? tableParams(*st, path, "[solver]", {"control"}) : Params("[solver]");
   pb.run.solver = readSolver(solver, "kind");
   solver.checkAllUsed();
+  // [solver.control]: displacement control of the particles it selects (resolved to IDs
+  // once the particles exist).
+  const toml::table* ct = st ? subTable(*st, "control", path) : nullptr;
+  std::optional<Selection> controlled;
+  if (ct) {
+    if (!pb.run.solver.quasiStatic)
+      throw InputError(path, lineOf(*ct),
+                       "[solver.control] is the quasi-static solver's displacement control; set "
+                       "kind = \"quasi_static\"");
+    const Params c = tableParams(*ct, path, "[solver.control]");
+    pb.run.solver.control = readControl(c, "");
+    if (!pb.run.solver.control.active())
+      throw InputError(path, lineOf(*ct),
+                       "[solver.control] needs axis (x, y or z) and displacement (the peak "
+                       "displacement along it)");
+    controlled = readSelection(c, path);
+    c.checkAllUsed();
+  }
   if (pb.run.solver.quasiStatic) {
     checkStaticLoading(pb.run.solver, loading);
     if (top.has("steps"))
@@ -350,6 +369,13 @@ Scenario readScenario(const std::string& path) {
   readModel(root, path, sc);
   Generated g = readParticles(root, path, sc);
   pb.particles = std::move(g.particles);
+  if (controlled) {
+    pb.run.solver.control.ids = controlled->selected(pb.particles);
+    if (pb.run.solver.control.ids.empty())
+      throw InputError(path, pb.run.solver.control.line,
+                       "[solver.control] selects no particle (check its x, y, z ranges and ids "
+                       "against the particles' reference positions)");
+  }
   readDecomposition(root, path, g, pb);
   readOutput(root, path, pb);
   if (const toml::table* t = subTable(root, "strength", path)) {

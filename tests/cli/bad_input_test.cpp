@@ -206,7 +206,15 @@ dir = "out"
       {"quasi-static keys with the dynamic solver", "\"quasi_static\"", "\"dynamic\"",
        "qs.toml:9: tolerance is a quasi-static solver parameter"},
       {"too few iterations", "max_iterations = 100000", "max_iterations = 3",
-       "qs.toml:10: load step 1 (load factor 0.5) did not converge in 3 iterations", false},
+       "qs.toml:10: load step 1 (load factor 0.000488281) did not converge in 3 iterations", false},
+      {"displacement control on no particle", "load_steps = 2",
+       "load_steps = 2\n[solver.control]\naxis = \"y\"\ndisplacement = -1e-4\nx = [5, 6]",
+       "qs.toml:13: [solver.control] selects no particle"},
+      {"displacement control without its displacement", "load_steps = 2",
+       "load_steps = 2\n[solver.control]\naxis = \"y\"\nx = [0, 0.01]",
+       "qs.toml:13: the displacement control needs both axis"},
+      {"negative max_broken", "load_steps = 2", "load_steps = 2\nmax_broken = -1",
+       "qs.toml:12: max_broken must be >= 0"},
   };
   for (const auto& c : solverCases) {
     SCOPED_TRACE(c.name);

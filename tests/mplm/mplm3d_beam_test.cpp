@@ -18,6 +18,7 @@
 #include "prep/fcc.hpp"
 #include "prep/mplm/specimen.hpp"
 #include "prep/mplm/specimen3d.hpp"
+#include "quasi_static.hpp"
 
 namespace pdq::mplm3d {
 namespace {
@@ -138,6 +139,43 @@ TEST(Mplm3dBeam, CantileverAlongBondsMatchesTimoshenko) {
   const double ratio = deflectionRatio(ClosePacked{0.02, 0, 2}, 1.2, 0.2, 0.2);
   std::cout << "bonds along x, layers along z: tip deflection / Timoshenko " << ratio << "\n";
   EXPECT_NEAR(ratio, 1.0, 0.03);
+}
+
+// The quasi-static solver on the 3D lattice (spatial rotations): a small cantilever relaxes
+// to the static solution of the same forces found by conjugate gradients.
+TEST(Mplm3dBeam, QuasiStaticCantileverReachesTheStaticSolution) {
+  const double s = 0.02, P = 1000;
+  ParticleSet ps = newParticleSet();
+  addConcrete(ps, closePackedFill(ClosePacked{s, 0, 2}, {0.16, 0.06, 0.06}));
+  const auto tip = mplm::select(ps, [&](const double* f) { return f[0] > 0.16 - s; });
+  constrain(ps, mplm::select(ps, [&](const double* f) { return f[0] < 2 * s; }), FIX_ALL);
+  load(ps, tip, {0, -P / static_cast<double>(tip.size()), 0, 0, 0, 0});
+  const Params p = mplm::test::params({{"kinematics", "small"}, {"damage", "false"}});
+  Comm comm;
+  auto reference = mplm::test::simulation(comm, p, ps, 1, "mplm3d");
+  reference->setup();
+  const auto u = staticSolution(*reference, s);
+  const double tolerance = 1e-7;
+  auto sim =
+      mplm::test::quasiStatic(comm, p, ps, mplm::test::solver(tolerance, 1), "qs3d", 1, "mplm3d");
+  sim->run();
+  const auto rows = mplm::test::loadStepRows("qs3d");
+  ASSERT_EQ(rows.size(), 1u);
+  std::cout << "mplm3d cantilever, " << ps.size() << " particles: " << rows[0][2]
+            << " iterations to " << rows[0][5] << " of the load\n";
+  EXPECT_LE(rows[0][5], tolerance);
+  // The same particle order in both runs (one rank, the same particles).
+  const Particles& Q = sim->context().particles;
+  double big = 0, diff = 0;
+  for (std::size_t i = 0; i < Q.owned(); ++i)
+    for (int d = 0; d < 3; ++d) {
+      big = std::max(big, std::abs(u[6 * i + d]));
+      diff = std::max(diff, std::abs(Q.alter(i)[AX + d] - Q.fixed(i)[FX_X + d] - u[6 * i + d]));
+    }
+  std::cout << "largest difference from the static solution: " << diff / big
+            << " of the largest displacement\n";
+  EXPECT_GT(big, 0);
+  EXPECT_LT(diff, 1e-5 * big);
 }
 
 }  // namespace

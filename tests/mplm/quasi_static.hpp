@@ -1,5 +1,6 @@
 #pragma once
-// Running mplm2d with the quasi-static solver in a test, and reading its quasi_static.csv.
+// Running mplm2d (or mplm3d) with the quasi-static solver in a test, and reading its
+// quasi_static.csv.
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -13,13 +14,14 @@ namespace pdq::mplm::test {
 
 inline std::unique_ptr<Simulation> quasiStatic(Comm& comm, const Params& p, ParticleSet ps,
                                                const Solver& solver, const std::string& dir,
-                                               double scale = 1) {
+                                               double scale = 1,
+                                               const std::string& model = "mplm2d") {
   RunConfig run;
   run.solver = solver;
   run.steps = solver.loadSteps;
   run.loading.scale = scale;
   run.outDir = dir;
-  auto sim = makeSimulation(makeProblem("mplm2d", p, std::move(ps), run), comm);
+  auto sim = makeSimulation(makeProblem(model, p, std::move(ps), run), comm);
   sim->setup();
   return sim;
 }
