@@ -61,28 +61,20 @@ struct Result {
 };
 
 Result runOn(int ranks, int threads, const std::string& dir, std::optional<long> restartFrom = {}) {
-  const int before = omp_get_max_threads();
-  omp_set_num_threads(threads);
-  MPI_Comm sub = pdq::test::firstRanks(ranks);
   Result r;
-  if (sub != MPI_COMM_NULL) {
-    Comm comm(sub);
-    Problem pb = notchedBeam(dir);
-    if (restartFrom) {
-      pb.restart = readRestart(restartPath("qs_control_1", *restartFrom), pb);
+  auto problem = [&](Comm& comm) {
+    if (restartFrom && comm.root()) {
       // The curve so far, which the restarted run continues.
       std::filesystem::create_directories(dir);
-      if (comm.root())
-        std::filesystem::copy_file("qs_control_1/quasi_static.csv", dir + "/quasi_static.csv",
-                                   std::filesystem::copy_options::overwrite_existing);
+      std::filesystem::copy_file("qs_control_1/quasi_static.csv", dir + "/quasi_static.csv",
+                                 std::filesystem::copy_options::overwrite_existing);
     }
-    auto sim = makeSimulation(std::move(pb), comm);
-    sim->run();
-    r.state = pdq::test::gatherState(*sim);
+    return notchedBeam(dir);
+  };
+  test::runOnRanks(ranks, threads, problem, "qs_control_1", restartFrom, [&](Simulation& sim) {
+    r.state = pdq::test::gatherState(sim);
     r.curve = test::loadStepRows(dir);
-    MPI_Comm_free(&sub);
-  }
-  omp_set_num_threads(before);
+  });
   return r;
 }
 

@@ -34,20 +34,10 @@ Problem beamProblem(const std::string& dir) {
 // The beam on the first `ranks` world ranks, gathered on world rank 0.
 pdq::test::State runOn(int ranks, int threads, const std::string& dir,
                        std::optional<long> restartFrom = {}) {
-  const int before = omp_get_max_threads();
-  omp_set_num_threads(threads);
-  MPI_Comm sub = pdq::test::firstRanks(ranks);
   pdq::test::State s;
-  if (sub != MPI_COMM_NULL) {
-    Comm comm(sub);
-    Problem pb = beamProblem(dir);
-    if (restartFrom) pb.restart = readRestart(restartPath("qs_det_1", *restartFrom), pb);
-    auto sim = makeSimulation(std::move(pb), comm);
-    sim->run();
-    s = pdq::test::gatherState(*sim);
-    MPI_Comm_free(&sub);
-  }
-  omp_set_num_threads(before);
+  test::runOnRanks(
+      ranks, threads, [&](Comm&) { return beamProblem(dir); }, "qs_det_1", restartFrom,
+      [&](Simulation& sim) { s = pdq::test::gatherState(sim); });
   return s;
 }
 
