@@ -38,6 +38,8 @@ struct PictureCommandOptions {
   std::string restart;           // ParticleAlterAttrs.<step>.rst; empty: the latest in the output
   std::string out;               // picture file; empty: <output>/<name>_<step>.<format>
   std::vector<std::string> set;  // key=value picture options ([output.picture] keys)
+  std::string view, slab;        // the picture options view and slab, if given
+  double magnification = 0;      // the picture option magnification, if above 0
 };
 void pictureCommand(const PictureCommandOptions& o);
 

@@ -138,6 +138,14 @@ int main(int argc, char** argv) {
   pictureCmd->add_option("-o,--out", picture.out, "picture file (.png, .svg or .pdf)");
   pictureCmd->add_option("--set", picture.set,
                          "picture option key=value, as in [output.picture] (repeatable)");
+  pictureCmd->add_option("--view", picture.view,
+                         "direction towards the viewer: x, y, z, -x, -y, -z or a,b,c (3D side "
+                         "elevation: z; plan from below: -y)");
+  pictureCmd->add_option("--slab", picture.slab,
+                         "only the particles whose reference coordinate is in a range, and "
+                         "the bonds between them: axis=lo:hi, e.g. z=0.05:0.11");
+  pictureCmd->add_option("--magnification", picture.magnification,
+                         "displacements drawn this many times larger");
   addPlugin(pictureCmd);
   PlotCommandOptions plot;
   CLI::App* plotCmd =

@@ -58,6 +58,10 @@ void pictureCommand(const PictureCommandOptions& o) {
   // The picture options: the scenario's [output.picture] table, then --set items.
   Params table = pb.output.picture ? *pb.output.picture : Params("picture options");
   setFromCommandLine(table, o.set);
+  if (!o.view.empty()) table.set("view", o.view, "--view", 0);
+  if (!o.slab.empty()) table.set("slab", o.slab, "--slab", 0);
+  if (o.magnification > 0)
+    table.set("magnification", numberText(o.magnification), "--magnification", 0);
   post::PictureOptions opt = post::pictureOptions(table);
   table.checkAllUsed();
   const Schema schema = pb.model->schema();

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <tuple>
 
 #include "engine/atomic_file.hpp"
@@ -42,6 +44,12 @@ PictureOptions pictureOptions(const Params& t) {
   st.valueMin = t.number("value_min", st.valueMin);
   st.valueMax = t.number("value_max", st.valueMax);
   st.title = t.text("title", st.title);
+  if (t.has("slab")) {
+    const auto [file, line] = where("slab");
+    r.slab = parseSlab(t.text("slab"), file, line);
+    r.slabSource = file;
+    r.slabLine = line;
+  }
   return o;
 }
 
@@ -52,23 +60,31 @@ PictureOutput::PictureOutput(PictureOptions options)
                      "unknown picture format '" + opt_.format + "' (use png, svg or pdf)");
 }
 
-void PictureOutput::begin(OutputContext& out, bool resumed) {
-  if (out.comm.root())
-    removeStepFiles(out.outDir, opt_.name + "_", "." + opt_.format, resumed ? out.step : -1);
-}
-
 std::string PictureOutput::fileName(const PictureOptions& o, long step) {
   return fmt::format("{}_{:06d}.{}", o.name, step, o.format);
 }
 
-void PictureOutput::write(OutputContext& out) {
-  if (!checked_) {  // every rank alike, before any collective call
-    const Schema& schema = out.ctx.particles.schema();
-    std::vector<std::string> bondNames{"broken"};  // the engine's flag, then the model's
-    bondNames.insert(bondNames.end(), schema.bond.begin(), schema.bond.end());
-    checkRequest(opt_.request, quantityNames(schema, out.model), bondNames);
-    checked_ = true;
+void PictureOutput::begin(OutputContext& out, bool resumed) {
+  // Every rank alike, before the first step: errors stop the run before anything is drawn.
+  const Schema& schema = out.ctx.particles.schema();
+  std::vector<std::string> bondNames{"broken"};  // the engine's flag, then the model's
+  bondNames.insert(bondNames.end(), schema.bond.begin(), schema.bond.end());
+  checkRequest(opt_.request, quantityNames(schema, out.model), bondNames);
+  if (const Slab& slab = opt_.request.slab; slab.axis >= 0) {
+    const Particles& P = out.ctx.particles;
+    double inside = 0, lo = INFINITY, hi = -INFINITY;
+    for (std::size_t i = 0; i < P.owned(); ++i) {
+      inside = std::max(inside, slab.contains(P.fixed(i)) ? 1.0 : 0.0);
+      lo = std::min(lo, P.fixed(i)[slab.axis]);
+      hi = std::max(hi, P.fixed(i)[slab.axis]);
+    }
+    if (out.ctx.max(inside) == 0) emptySlab(opt_.request, out.ctx.min(lo), out.ctx.max(hi));
   }
+  if (out.comm.root())
+    removeStepFiles(out.outDir, opt_.name + "_", "." + opt_.format, resumed ? out.step : -1);
+}
+
+void PictureOutput::write(OutputContext& out) {
   const Snapshot s = gatherSnapshot(out.ctx, out.model, out.comm, out.step);
   if (!out.comm.root()) return;
   PictureRequest r = opt_.request;

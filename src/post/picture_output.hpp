@@ -20,14 +20,15 @@ struct PictureOptions {
 
 // Options from a scenario's table (e.g. [output.picture]): every, at_end, name, format,
 // colour_by, bond_damage, magnification, view, width, height, dot_radius,
-// damage_threshold, value_min, value_max, title.
+// damage_threshold, value_min, value_max, title, slab.
 PictureOptions pictureOptions(const Params& table);
 
 class PictureOutput final : public Output {
  public:
   explicit PictureOutput(PictureOptions options);
   bool atEnd() const override { return opt_.atEnd; }
-  // Removes an earlier run's pictures after this run's first step (all: started afresh).
+  // Checks the request's names and slab against the lattice (every rank alike), then
+  // removes an earlier run's pictures after this run's first step (all: started afresh).
   void begin(OutputContext& out, bool resumed) override;
   void write(OutputContext& out) override;
   // The file of the picture at `step`.
@@ -35,7 +36,6 @@ class PictureOutput final : public Output {
 
  private:
   PictureOptions opt_;
-  bool checked_ = false;
 };
 
 }  // namespace pdq::post

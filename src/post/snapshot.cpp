@@ -1,5 +1,7 @@
 #include "post/snapshot.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -216,13 +218,75 @@ void checkRequest(const PictureRequest& r, const std::vector<std::string>& names
                      "no bond attribute '" + d + "' to draw as damage" + suggestion(d, bondNames));
 }
 
+Slab parseSlab(const std::string& text, const std::string& file, int line) {
+  auto bad = [&](const std::string& why) {
+    throw InputError(file, line,
+                     "slab '" + text + "': " + why +
+                         " (give an axis and a range of its reference coordinate, such as "
+                         "z=0.05:0.11)");
+  };
+  const auto eq = text.find('='), colon = text.find(':');
+  if (eq == std::string::npos || colon == std::string::npos || colon < eq) bad("no axis=lo:hi");
+  const std::string axis = text.substr(0, eq);
+  Slab slab;
+  if (axis == "x" || axis == "X")
+    slab.axis = 0;
+  else if (axis == "y" || axis == "Y")
+    slab.axis = 1;
+  else if (axis == "z" || axis == "Z")
+    slab.axis = 2;
+  else
+    bad("the axis must be x, y or z");
+  auto number = [&](const std::string& t) {
+    std::size_t used = 0;
+    double v = NAN;
+    try {
+      v = std::stod(t, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (t.empty() || used != t.size() || !std::isfinite(v)) bad("'" + t + "' is not a number");
+    return v;
+  };
+  slab.lo = number(text.substr(eq + 1, colon - eq - 1));
+  slab.hi = number(text.substr(colon + 1));
+  if (!(slab.lo < slab.hi)) bad("the range is empty (lo must be below hi)");
+  return slab;
+}
+
+void emptySlab(const PictureRequest& r, double lo, double hi) {
+  const char name = static_cast<char>('x' + r.slab.axis);
+  throw InputError(r.slabSource, r.slabLine,
+                   fmt::format("the slab {}={}:{} holds no particle (the particles' reference {} "
+                               "runs from {} to {})",
+                               name, r.slab.lo, r.slab.hi, name, lo, hi));
+}
+
 LatticeImage latticeImage(const Snapshot& s, const PictureRequest& r) {
   checkRequest(r, s.names, s.bondNames);
   LatticeImage im;
-  const std::size_t n = s.particles();
-  im.position = s.reference;
-  im.displacement.resize(3 * n);
-  for (std::size_t k = 0; k < 3 * n; ++k) im.displacement[k] = s.current[k] - s.reference[k];
+  // The particles drawn (those in the slab) and their places in the image.
+  constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> kept, place(s.particles(), none);
+  for (std::size_t i = 0; i < s.particles(); ++i)
+    if (r.slab.contains(&s.reference[3 * i])) {
+      place[i] = kept.size();
+      kept.push_back(i);
+    }
+  if (kept.empty() && r.slab.axis >= 0) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t i = 0; i < s.particles(); ++i) {
+      lo = std::min(lo, s.reference[3 * i + r.slab.axis]);
+      hi = std::max(hi, s.reference[3 * i + r.slab.axis]);
+    }
+    emptySlab(r, lo, hi);
+  }
+  const std::size_t n = kept.size();
+  for (std::size_t i : kept)
+    for (int a = 0; a < 3; ++a) {
+      im.position.push_back(s.reference[3 * i + a]);
+      im.displacement.push_back(s.current[3 * i + a] - s.reference[3 * i + a]);
+    }
   if (r.colourBy == "displacement") {
     im.values.resize(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -230,16 +294,19 @@ LatticeImage latticeImage(const Snapshot& s, const PictureRequest& r) {
                                 im.displacement[3 * i + 2]);
   } else if (!r.colourBy.empty()) {
     const auto k = std::find(s.names.begin(), s.names.end(), r.colourBy) - s.names.begin();
-    im.values = s.values[k];
+    for (std::size_t i : kept) im.values.push_back(s.values[k][i]);
   }
   im.valueName = r.colourBy;
   const std::string d = damageName(r, s.bondNames);
   if (!d.empty()) {
     const std::size_t nb = s.bondNames.size();
     const auto k = std::find(s.bondNames.begin(), s.bondNames.end(), d) - s.bondNames.begin();
-    im.bonds = s.bonds;
-    for (std::size_t b = 0; b < s.bonds.size(); ++b)
+    for (std::size_t b = 0; b < s.bonds.size(); ++b) {
+      const std::size_t i = place[s.bonds[b][0]], j = place[s.bonds[b][1]];
+      if (i == none || j == none) continue;
+      im.bonds.push_back({i, j});
       im.bondDamage.push_back(s.bondAttrs[b * nb + k]);
+    }
   }
   return im;
 }

@@ -50,6 +50,20 @@ void sortParticles(Snapshot& s);
 void addBonds(Snapshot& s, const std::vector<Gid>& owner, const std::vector<Gid>& partner,
               const std::vector<double>& attrs, const std::string& source);
 
+// A slab of the lattice: the particles whose reference coordinate along `axis` (0, 1, 2
+// for X, Y, Z; -1: no slab, every particle) lies in [lo, hi], and the bonds between them.
+struct Slab {
+  int axis = -1;
+  double lo = 0, hi = 0;
+  bool contains(const double* reference) const {
+    return axis < 0 || (reference[axis] >= lo && reference[axis] <= hi);
+  }
+};
+
+// Parses "z=0.05:0.11" (axis x, y or z, then the range lo:hi with lo < hi); InputError
+// naming `file` and `line` otherwise.
+Slab parseSlab(const std::string& text, const std::string& file, int line);
+
 // What to draw from a snapshot.
 struct PictureRequest {
   PictureStyle style;
@@ -59,14 +73,22 @@ struct PictureRequest {
   // The bond attribute drawn as damage (0..1); empty: "damage" if there is one, else
   // no bonds; "none": no bonds.
   std::string bondDamage;
+  // Only the particles in this slab (reference positions) and the bonds between them.
+  Slab slab;
   // Where the names were written, for errors.
-  std::string source = "picture";
-  int colourByLine = 0, bondDamageLine = 0;
+  std::string source = "picture", slabSource = "picture";
+  int colourByLine = 0, bondDamageLine = 0, slabLine = 0;
 };
+
+// The error for a slab that holds no particle, given the particles' reference range along
+// its axis.
+[[noreturn]] void emptySlab(const PictureRequest& request, double lo, double hi);
 
 // Throws InputError (suggesting the nearest name) when a requested name is unknown.
 void checkRequest(const PictureRequest& request, const std::vector<std::string>& names,
                   const std::vector<std::string>& bondNames);
+// The picture's arrays: the request's quantities of the particles in its slab. InputError
+// (at the slab's line) when the slab holds no particle.
 LatticeImage latticeImage(const Snapshot& snapshot, const PictureRequest& request);
 void renderSnapshot(const Snapshot& snapshot, const PictureRequest& request,
                     const std::string& path);

@@ -181,6 +181,89 @@ TEST(PictureOutput, OptionsFromAScenarioTable) {
   EXPECT_THROW(post::pictureOptions(t), InputError);
 }
 
+// A 3 × 3 × 3 lattice at unit spacing with bonds along X; three of them damaged, one in
+// each Z layer: (0,1,1)-(1,1,1) broken, (1,1,0)-(2,1,0) broken, (0,0,2)-(1,0,2) half.
+post::Snapshot cube() {
+  post::Snapshot s;
+  for (int z = 0; z < 3; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 3; ++x) {
+        s.id.push_back(static_cast<Gid>(s.id.size()));
+        s.reference.insert(s.reference.end(), {double(x), double(y), double(z)});
+      }
+  s.current = s.reference;
+  s.bondNames = {"broken", "damage"};
+  auto at = [](int x, int y, int z) { return static_cast<std::size_t>(x + 3 * y + 9 * z); };
+  for (int z = 0; z < 3; ++z)
+    for (int y = 0; y < 3; ++y)
+      for (int x = 0; x < 2; ++x) {
+        s.bonds.push_back({at(x, y, z), at(x + 1, y, z)});
+        double d = 0;
+        if (x == 0 && y == 1 && z == 1) d = 1;
+        if (x == 1 && y == 1 && z == 0) d = 1;
+        if (x == 0 && y == 0 && z == 2) d = 0.5;
+        s.bondAttrs.insert(s.bondAttrs.end(), {d == 1 ? 1.0 : 0.0, d});
+      }
+  return s;
+}
+
+TEST(PictureOutput, SlabsAndPlanesOfA3dLattice) {
+  const post::Snapshot s = cube();
+  post::PictureRequest r;
+  r.style.width = 600;
+  r.style.dotRadius = 4;
+  auto colourAt = [&](const std::string& path, std::array<double, 3> p) {
+    const post::LatticeFrame f = post::latticeFrame(post::latticeImage(s, r), r.style);
+    post::renderSnapshot(s, r, path);
+    const test::Png png(path);
+    const auto px = f.pixel(p.data());
+    return png.at(px[0], px[1]);
+  };
+  // Side elevation (XY) of the whole lattice: the broken bonds of layers z = 0 and 1.
+  EXPECT_LT(test::distance(colourAt("side.png", {0.5, 1, 1}), {0, 0, 0}), 0.02);
+  EXPECT_LT(test::distance(colourAt("side.png", {1.5, 1, 0}), {0, 0, 0}), 0.02);
+  // The slab of the middle layer: its broken bond black, the bottom layer's not drawn.
+  r.slab = post::parseSlab("z=0.5:1.5", "view.toml", 3);
+  EXPECT_LT(test::distance(colourAt("slab.png", {0.5, 1, 1}), {0, 0, 0}), 0.02);
+  EXPECT_LT(test::distance(colourAt("slab.png", {1.5, 1, 0}), {1, 1, 1}), 0.02);
+  EXPECT_EQ(post::latticeImage(s, r).particles(), 9u);
+  EXPECT_EQ(post::latticeImage(s, r).bonds.size(), 6u);
+  // Plan from below (XZ, viewer at -Y): X to the right, Z up; the slab y = 0 shows the
+  // half-damaged bond of the top layer in the ramp's colour at (x, z) = (0.5, 2).
+  r.style.view = post::parseView("-y");
+  r.slab = post::parseSlab("y=-0.5:0.5", "view.toml", 3);
+  const post::LatticeFrame f = post::latticeFrame(post::latticeImage(s, r), r.style);
+  EXPECT_NEAR(f.right[0], 1, 1e-12);
+  EXPECT_NEAR(f.up[2], 1, 1e-12);
+  EXPECT_LT(test::distance(colourAt("below.png", {0.5, 0, 2}), post::damageColour(0.5)), 0.02);
+  EXPECT_LT(test::distance(colourAt("below.png", {1.5, 0, 0}), {1, 1, 1}), 0.02);
+}
+
+TEST(PictureOutput, BadSlabsAreErrors) {
+  for (const char* text : {"z=0.11:0.05", "z=0.1:0.1", "w=0:1", "z0:1", "z=a:1", "z=0.1", ""}) {
+    try {
+      post::parseSlab(text, "beam.toml", 7);
+      FAIL() << text;
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.file(), "beam.toml");
+      EXPECT_EQ(e.line(), 7);
+    }
+  }
+  // A slab beside the lattice holds no particle: the error names the lattice's range.
+  Params t("[output.picture]");
+  t.set("slab", "z=5:6", "beam.toml", 9);
+  const post::PictureOptions o = post::pictureOptions(t);
+  try {
+    post::latticeImage(cube(), o.request);
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.file(), "beam.toml");
+    EXPECT_EQ(e.line(), 9);
+    EXPECT_NE(std::string(e.what()).find("holds no particle"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("from 0 to 2"), std::string::npos) << e.what();
+  }
+}
+
 TEST(PictureOutput, AddBondsKeepsOneCopyPerPair) {
   post::Snapshot s;
   s.id = {10, 11, 12};
