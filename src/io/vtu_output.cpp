@@ -83,6 +83,20 @@ vtu::Piece particlePiece(const Context& ctx, const Model& model) {
     model.field(ctx, k, std::span<double>(a.f64));
     piece.pointData.push_back(std::move(a));
   }
+  // A model with turns in space names its rotation vector's components rx, ry, rz; they
+  // are also written as one vector, for ParaView's glyphs and its magnitude.
+  auto field = [&](const std::string& name) -> const vtu::Array* {
+    for (const vtu::Array& a : piece.pointData)
+      if (a.name == name) return &a;
+    return nullptr;
+  };
+  if (const vtu::Array* x = field("rx"), *y = field("ry"), *z = field("rz"); x && y && z) {
+    vtu::Array r{"rotation", 3, false, {}, {}};
+    r.f64.reserve(3 * n);
+    for (std::size_t i = 0; i < n; ++i)
+      r.f64.insert(r.f64.end(), {x->f64[i], y->f64[i], z->f64[i]});
+    piece.pointData.push_back(std::move(r));
+  }
   return piece;
 }
 

@@ -3,14 +3,24 @@
 // bond appears once with its attribute — at any number of ranks.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 #include "engine/error.hpp"
+#include "io/standard_outputs.hpp"
 #include "io/vtu_output.hpp"
+#include "models/mplm/3d/attributes.hpp"
+#include "post/snapshot.hpp"
+#include "prep/fcc.hpp"
+#include "prep/mplm/specimen.hpp"
+#include "prep/mplm/specimen3d.hpp"
 #include "spring_lattice.hpp"
 
 namespace pdq {
@@ -79,6 +89,94 @@ TEST(Vtu, ParaViewReadsParticlesAndBonds) {
   for (const auto& [k, flag] : bonds) broken += flag != 0;
   EXPECT_GT(broken, 0);
   EXPECT_LT(broken, static_cast<int>(bonds.size()));
+}
+
+// A cracking 3D lattice (mplm3d): every particle's orientation, rotation vector (also as
+// one 3-component array) and damage, and every interaction once as a line with its damage,
+// read back by ParaView as the run left them.
+TEST(Vtu, ParaViewReadsMplm3dRotationsAndDamage) {
+  Comm comm;
+  const std::string dir = "vtu_mplm3d_np" + std::to_string(comm.size());
+  if (comm.root()) std::filesystem::remove_all(dir);
+  comm.barrier();
+  constexpr double s = 0.02;
+  using namespace mplm3d;
+  Problem pb = makeProblem("mplm3d", test::params({{"spacing", "0.02"}}), newParticleSet());
+  ParticleSet& ps = pb.particles;
+  addConcrete(ps, closePackedBox({s, 0, 2}, {0.3, 0.1, 0.08}));
+  const double xmax = mplm::maxCoord(ps, 0);
+  constrain(ps, mplm::select(ps, [&](const double* f) { return f[0] < s; }), FIX_ALL);
+  // The far end pulled and pushed down far enough to break interactions.
+  constrain(ps, mplm::select(ps, [&](const double* f) { return f[0] > xmax - s / 4; }),
+            FIX_X | FIX_Y, {1e-3, -5e-4, 0, 0, 0, 0});
+  pb.run.loading.rampTime = 4e-5;  // s: about 200 steps
+  pb.run.steps = 300;
+  pb.run.outDir = dir;
+  const auto sim = makeSimulation(std::move(pb), comm);
+  sim->addOutput(std::make_unique<VtuOutput>(VtuOptions{.every = 0}));
+  sim->run();
+  const post::Snapshot snap = post::gatherSnapshot(sim->context(), sim->model(), comm, sim->step());
+  if (!comm.root()) return;
+
+  std::istringstream out(pvpython(dir + "/particles.pvd rotation,rx,ry,rz,qw,qx,qy,qz,damage " +
+                                      dir + "/particles_bonds.pvd omega_t,omega_c",
+                                  dir + "/read.txt"));
+  std::string word, line;
+  std::getline(out, line);  // series
+  std::getline(out, line);  // times
+  long points = -1, cells = -1;
+  out >> word >> points >> word >> cells;
+  ASSERT_EQ(points, static_cast<long>(snap.particles()));
+  auto quantity = [&](const std::string& name) {
+    const auto k = std::find(snap.names.begin(), snap.names.end(), name) - snap.names.begin();
+    EXPECT_LT(k, static_cast<long>(snap.names.size())) << name;
+    return snap.values.at(k);
+  };
+  const std::vector<std::string> names{"rx", "ry", "rz", "rx", "ry",    "rz",
+                                       "qw", "qx", "qy", "qz", "damage"};
+  std::vector<std::vector<double>> expected;
+  for (const auto& n : names) expected.push_back(quantity(n));
+  double turned = 0, damaged = 0;
+  long read = 0;
+  while (out >> word && word == "value") {
+    long id;
+    out >> id;
+    const std::size_t i = static_cast<std::size_t>(
+        std::lower_bound(snap.id.begin(), snap.id.end(), id) - snap.id.begin());
+    ASSERT_LT(i, snap.particles());
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      double v;
+      out >> v;
+      EXPECT_EQ(v, expected[k][i]) << names[k] << " of particle " << id;
+    }
+    turned = std::max(turned, std::abs(expected[0][i]) + std::abs(expected[2][i]));
+    damaged = std::max(damaged, expected[10][i]);
+    ++read;
+  }
+  EXPECT_EQ(read, points);
+  EXPECT_GT(turned, 0) << "the particles should turn";
+  EXPECT_GT(damaged, 0) << "the run should damage the lattice";
+
+  // Interactions: each once as a line, with its tensile and compressive damage.
+  ASSERT_EQ(word, "series");
+  std::getline(out, line);
+  std::getline(out, line);  // times
+  out >> word >> points >> word >> cells;
+  ASSERT_EQ(cells, static_cast<long>(snap.bonds.size()));
+  const std::size_t nb = snap.bondNames.size();
+  const auto kt =
+      std::find(snap.bondNames.begin(), snap.bondNames.end(), "omega_t") - snap.bondNames.begin();
+  std::map<std::pair<long, long>, std::array<double, 2>> bonds, seen;
+  for (std::size_t b = 0; b < snap.bonds.size(); ++b)
+    bonds[{snap.id[snap.bonds[b][0]], snap.id[snap.bonds[b][1]]}] = {
+        snap.bondAttrs[b * nb + kt], snap.bondAttrs[b * nb + kt + 1]};
+  long a, b;
+  double t, c;
+  while (out >> word >> a >> b >> t >> c) seen[{a, b}] = {t, c};
+  EXPECT_EQ(seen, bonds);
+  int cracked = 0;
+  for (const auto& [key, omega] : bonds) cracked += omega[0] >= 1;
+  EXPECT_GT(cracked, 0);
 }
 
 // A restarted run (first step 8) continues the earlier run's series: the entries before
