@@ -9,10 +9,8 @@
 
 #include "io/standard_outputs.hpp"
 #include "models/mplm/3d/attributes.hpp"
-#include "prep/fcc.hpp"
-#include "prep/mplm/specimen.hpp"
-#include "prep/mplm/specimen3d.hpp"
 #include "support/harness.hpp"
+#include "support/mplm3d_bar.hpp"
 
 namespace pdq::mplm3d {
 namespace {
@@ -23,18 +21,10 @@ struct Layout {
   int threads;
 };
 
-// A 0.3 m bar clamped at X = 0 whose far end is pulled and pushed down far enough to
-// break interactions.
+// The cracking bar of support/mplm3d_bar.hpp, its far end moved at once.
 test::State run(MPI_Comm c, const Layout& l) {
   omp_set_num_threads(l.threads);
-  constexpr double s = 0.02;
-  Problem pb = makeProblem("mplm3d", test::params({{"spacing", "0.02"}}), newParticleSet());
-  ParticleSet& ps = pb.particles;
-  addConcrete(ps, closePackedBox({s, 0, 2}, {0.3, 0.1, 0.08}));
-  const double xmax = mplm::maxCoord(ps, 0);
-  constrain(ps, mplm::select(ps, [&](const double* f) { return f[0] < s; }), FIX_ALL);
-  constrain(ps, mplm::select(ps, [&](const double* f) { return f[0] > xmax - s / 4; }),
-            FIX_X | FIX_Y, {1e-3, -5e-4, 0, 0, 0, 0});
+  Problem pb = test::crackingBar3d();
   pb.run.procs = l.grid;
   pb.run.steps = 300;
   pb.run.outDir = "out_mplm3d_determinism";

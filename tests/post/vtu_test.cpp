@@ -16,12 +16,9 @@
 #include "engine/error.hpp"
 #include "io/standard_outputs.hpp"
 #include "io/vtu_output.hpp"
-#include "models/mplm/3d/attributes.hpp"
 #include "post/snapshot.hpp"
-#include "prep/fcc.hpp"
-#include "prep/mplm/specimen.hpp"
-#include "prep/mplm/specimen3d.hpp"
 #include "spring_lattice.hpp"
+#include "support/mplm3d_bar.hpp"
 
 namespace pdq {
 namespace {
@@ -99,16 +96,7 @@ TEST(Vtu, ParaViewReadsMplm3dRotationsAndDamage) {
   const std::string dir = "vtu_mplm3d_np" + std::to_string(comm.size());
   if (comm.root()) std::filesystem::remove_all(dir);
   comm.barrier();
-  constexpr double s = 0.02;
-  using namespace mplm3d;
-  Problem pb = makeProblem("mplm3d", test::params({{"spacing", "0.02"}}), newParticleSet());
-  ParticleSet& ps = pb.particles;
-  addConcrete(ps, closePackedBox({s, 0, 2}, {0.3, 0.1, 0.08}));
-  const double xmax = mplm::maxCoord(ps, 0);
-  constrain(ps, mplm::select(ps, [&](const double* f) { return f[0] < s; }), FIX_ALL);
-  // The far end pulled and pushed down far enough to break interactions.
-  constrain(ps, mplm::select(ps, [&](const double* f) { return f[0] > xmax - s / 4; }),
-            FIX_X | FIX_Y, {1e-3, -5e-4, 0, 0, 0, 0});
+  Problem pb = test::crackingBar3d();
   pb.run.loading.rampTime = 4e-5;  // s: about 200 steps
   pb.run.steps = 300;
   pb.run.outDir = dir;
