@@ -258,7 +258,7 @@ void emptySlab(const PictureRequest& r, double lo, double hi) {
   const char name = static_cast<char>('x' + r.slab.axis);
   throw InputError(r.slabSource, r.slabLine,
                    fmt::format("the slab {}={}:{} holds no particle (the particles' reference {} "
-                               "runs from {} to {})",
+                               "runs from {:.6g} to {:.6g})",
                                name, r.slab.lo, r.slab.hi, name, lo, hi));
 }
 
