@@ -4,8 +4,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/wait.h>
 
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -410,4 +412,68 @@ TEST(Checkpoint, AReusedFolderKeepsNothingStale) {
   EXPECT_FALSE(fs::exists(out + "/" + checkpointName(50)));
   EXPECT_TRUE(fs::exists(out + "/ParticleAlterAttrs.20.rst"));
   EXPECT_TRUE(fs::exists(out + "/" + checkpointName(30)));
+}
+
+namespace {
+
+// Runs a shell command in `dir`; its exit code.
+int shell(const std::string& dir, const std::string& command) {
+  const int status = std::system(("cd '" + dir + "' && " + command).c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+TEST(Checkpoint, BatchScriptsResumeAndSubmitThemselvesAgain) {
+  // tools/pdq.slurm and tools/pdq.pbs with stand-ins for the batch system's commands that
+  // run pdq here and record what would be submitted.
+  const std::string dir = freshDir("batch_scripts");
+  springCase(dir, 100000000, "checkpoint_every = 500\n");
+  const char* exe = std::getenv("PDQ_EXE");
+  const std::string bin = dir + "/bin";
+  fs::create_directories(bin);
+  const std::vector<std::pair<std::string, std::string>> fakes = {
+      {"pdq", "exec '" + std::string(exe ? exe : PDQ_EXE_DEFAULT) + "' \"$@\""},
+      {"srun", "exec \"$@\""},
+      {"mpirun", "while [ \"$1\" != pdq ]; do shift; done; exec \"$@\""},
+      {"sbatch", "echo \"sbatch $*\" >> submitted.txt"},
+      {"qsub", "echo \"qsub $*\" >> submitted.txt"},
+      {"scontrol", "echo '   Command=/cluster/jobs/pdq.slurm'"}};
+  for (const auto& [name, body] : fakes) {
+    writeFile(bin + "/" + name, "#!/bin/bash\n" + body + "\n");
+    fs::permissions(bin + "/" + name, fs::perms::owner_all, fs::perm_options::add);
+  }
+  writeFile(dir + "/nodes", "localhost\n");
+  const std::string env = "PATH='" + bin + "':$PATH PDQ_OUT=out ";
+  const std::string slurm = env + "SLURM_NTASKS=1 SLURM_JOB_ID=7 bash '" + sourceDir() +
+                            "/tools/pdq.slurm' lattice.toml --max-wall-time 3s";
+  // The first job starts the run, stops before its time is up and submits the next.
+  EXPECT_EQ(shell(dir, slurm + " > first.log 2>&1"), 0) << readFile(dir + "/first.log");
+  EXPECT_THAT(readFile(dir + "/first.log"), HasSubstr("stopped at step"));
+  EXPECT_EQ(readFile(dir + "/submitted.txt"),
+            "sbatch --export=ALL,PDQ_OUT=out,PDQ_SUBMISSION=2 /cluster/jobs/pdq.slurm "
+            "lattice.toml --max-wall-time 3s\n");
+  const long first = newestCheckpoint(dir + "/out");
+  EXPECT_GT(first, 0);
+  // The next resumes from the checkpoint, and with the last submission allowed stops there.
+  EXPECT_EQ(shell(dir, "PDQ_SUBMISSION=2 PDQ_MAX_SUBMISSIONS=2 " + slurm + " > second.log 2>&1"),
+            4);
+  EXPECT_THAT(readFile(dir + "/second.log"),
+              HasSubstr("resuming from out/" + checkpointName(first)));
+  EXPECT_GT(newestCheckpoint(dir + "/out"), first);
+  const long second = newestCheckpoint(dir + "/out");
+  // PBS: the same through --max-wall-time, submitting itself with qsub.
+  fs::remove(dir + "/submitted.txt");
+  EXPECT_EQ(shell(dir, env +
+                           "SCENARIO=lattice.toml PBS_NODEFILE=nodes PBS_O_WORKDIR=. "
+                           "PDQ_SUBMISSION=3 PDQ_WALL_TIME=3s PDQ_SCRIPT=/jobs/pdq.pbs bash '" +
+                           sourceDir() + "/tools/pdq.pbs' > third.log 2>&1"),
+            0)
+      << readFile(dir + "/third.log");
+  EXPECT_THAT(readFile(dir + "/third.log"),
+              HasSubstr("resuming from out/" + checkpointName(second)));
+  EXPECT_EQ(readFile(dir + "/submitted.txt"),
+            "qsub -v SCENARIO=lattice.toml,PDQ_OUT=out,PDQ_SUBMISSION=4,PDQ_SCRIPT=/jobs/pdq.pbs,"
+            "PDQ_WALL_TIME=3s,PDQ_OPTIONS= /jobs/pdq.pbs\n");
+  EXPECT_GT(newestCheckpoint(dir + "/out"), second);
 }
