@@ -15,15 +15,6 @@ using testing::HasSubstr;
 
 namespace {
 
-// Replaces the first `from` in the file by `to`.
-void replaceFirst(const std::string& path, const std::string& from, const std::string& to) {
-  std::string text = readFile(path);
-  const auto at = text.find(from);
-  ASSERT_NE(at, std::string::npos) << from << " not in " << path;
-  text.replace(at, from.size(), to);
-  writeFile(path, text);
-}
-
 struct Case {
   const char* name;
   std::function<void(const std::string& dir)> spoil;
@@ -35,56 +26,51 @@ struct Case {
 // the first [[particles.set]] 14 (attribute 15), min_cell_size 32, [output] 34,
 // dir 35, restart_every 36, history_ids 39; particle i of the files is on line i + 2.
 const std::vector<Case> cases = {
-    {"malformed number", [](auto d) { replaceFirst(d + "/fixed.dat", "\n5 5 0 0", "\n5 5 O 0"); },
+    {"malformed number", [](auto d) { edit(d + "/fixed.dat", "\n5 5 0 0", "\n5 5 O 0"); },
      "fixed.dat:7: 'O' is not a number (column 3)"},
-    {"missing number", [](auto d) { replaceFirst(d + "/fixed.dat", "\n5 5 0 0", "\n5 5 0"); },
+    {"missing number", [](auto d) { edit(d + "/fixed.dat", "\n5 5 0 0", "\n5 5 0"); },
      "fixed.dat:7: expected 4 numbers (id X Y Z), found 3"},
     {"wrong attribute count",
-     [](auto d) { replaceFirst(d + "/alter.dat", "\n9 9 0 0 0 0 0", "\n9 9 0 0 0 0"); },
+     [](auto d) { edit(d + "/alter.dat", "\n9 9 0 0 0 0 0", "\n9 9 0 0 0 0"); },
      "alter.dat:11: expected 7 numbers (id x y z vx vy vz), found 6"},
-    {"duplicate id", [](auto d) { replaceFirst(d + "/fixed.dat", "\n6 6 0 0", "\n5 6 0 0"); },
+    {"duplicate id", [](auto d) { edit(d + "/fixed.dat", "\n6 6 0 0", "\n5 6 0 0"); },
      "fixed.dat:8: duplicate global ID 5"},
-    {"nan coordinate", [](auto d) { replaceFirst(d + "/fixed.dat", "\n7 7 0 0", "\n7 nan 0 0"); },
+    {"nan coordinate", [](auto d) { edit(d + "/fixed.dat", "\n7 7 0 0", "\n7 nan 0 0"); },
      "fixed.dat:9: 'nan' is not a finite number (column 2)"},
-    {"inf coordinate", [](auto d) { replaceFirst(d + "/alter.dat", "\n8 8 0 0", "\n8 8 -inf 0"); },
+    {"inf coordinate", [](auto d) { edit(d + "/alter.dat", "\n8 8 0 0", "\n8 8 -inf 0"); },
      "alter.dat:10: '-inf' is not a finite number (column 3)"},
-    {"missing file",
-     [](auto d) { replaceFirst(d + "/lattice.toml", "\"fixed.dat\"", "\"fixd.dat\""); },
+    {"missing file", [](auto d) { edit(d + "/lattice.toml", "\"fixed.dat\"", "\"fixd.dat\""); },
      "lattice.toml:11: cannot read"},
-    {"unknown model", [](auto d) { replaceFirst(d + "/lattice.toml", "\"spring\"", "\"sprung\""); },
+    {"unknown model", [](auto d) { edit(d + "/lattice.toml", "\"spring\"", "\"sprung\""); },
      "lattice.toml:5: unknown model 'sprung' (did you mean 'spring'?)"},
-    {"unknown parameter",
-     [](auto d) { replaceFirst(d + "/lattice.toml", "dt = 0.05", "dT = 0.05"); },
+    {"unknown parameter", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dT = 0.05"); },
      "lattice.toml:7: unknown parameter 'dT' for model 'spring' ([model]) (did you mean 'dt'?)"},
     {"parameter out of range",
-     [](auto d) { replaceFirst(d + "/lattice.toml", "dt = 0.05", "dt = -0.05"); },
+     [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = -0.05"); },
      "lattice.toml:7: parameter 'dt'"},
     {"parameter not a number",
-     [](auto d) { replaceFirst(d + "/lattice.toml", "dt = 0.05", "dt = \"fast\""); },
+     [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = \"fast\""); },
      "lattice.toml:7: parameter 'dt' of model 'spring' ([model]): 'fast' is not a number"},
     {"cell size below horizon",
-     [](auto d) {
-       replaceFirst(d + "/lattice.toml", "min_cell_size = 1.5", "min_cell_size = 1.2");
-     },
+     [](auto d) { edit(d + "/lattice.toml", "min_cell_size = 1.5", "min_cell_size = 1.2"); },
      "lattice.toml:32: min_cell_size 1.2 is below the model's horizon 1.5"},
-    {"not toml", [](auto d) { replaceFirst(d + "/lattice.toml", "dt = 0.05", "dt = 0.05 0.06"); },
+    {"not toml", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = 0.05 0.06"); },
      "lattice.toml:7: not valid TOML"},
-    {"unknown table", [](auto d) { replaceFirst(d + "/lattice.toml", "[output]", "[outptu]"); },
+    {"unknown table", [](auto d) { edit(d + "/lattice.toml", "[output]", "[outptu]"); },
      "lattice.toml:34: unknown parameter 'outptu' for the scenario (did you mean 'output'?)"},
     {"unknown output key",
-     [](auto d) { replaceFirst(d + "/lattice.toml", "restart_every", "restart_evry"); },
+     [](auto d) { edit(d + "/lattice.toml", "restart_every", "restart_evry"); },
      "lattice.toml:36: unknown parameter 'restart_evry' for [output] (did you mean "
      "'restart_every'?)"},
-    {"unknown attribute", [](auto d) { replaceFirst(d + "/lattice.toml", "\"vx\"", "\"vq\""); },
+    {"unknown attribute", [](auto d) { edit(d + "/lattice.toml", "\"vx\"", "\"vq\""); },
      "lattice.toml:15: the model has no attribute 'vq'"},
-    {"unknown history id",
-     [](auto d) { replaceFirst(d + "/lattice.toml", "[0, 127]", "[0, 128]"); },
+    {"unknown history id", [](auto d) { edit(d + "/lattice.toml", "[0, 127]", "[0, 128]"); },
      "lattice.toml:39: history_ids: 128 is not a particle's ID"},
-    {"missing steps", [](auto d) { replaceFirst(d + "/lattice.toml", "steps = 40", "stepz = 40"); },
+    {"missing steps", [](auto d) { edit(d + "/lattice.toml", "steps = 40", "stepz = 40"); },
      "lattice.toml: missing steps"},
     {"steps and hold_time",
      [](auto d) {
-       replaceFirst(d + "/lattice.toml", "steps = 40\n", "steps = 40\n[loading]\nhold_time = 2\n");
+       edit(d + "/lattice.toml", "steps = 40\n", "steps = 40\n[loading]\nhold_time = 2\n");
      },
      "lattice.toml:2: give the run's length as steps = N or as [loading] hold_time, not both"},
 };
@@ -130,17 +116,17 @@ TEST(CliBadInput, ThesisFilesNameFileAndLine) {
   auto ids = [&](const std::string& v) {
     return DatCase{
         "history_ids",
-        [&, v] { replaceFirst(dir + "/dat/pdQInput.dat", "history_ids 0", "history_ids " + v); },
+        [&, v] { edit(dir + "/dat/pdQInput.dat", "history_ids 0", "history_ids " + v); },
         "pdQInput.dat:" + idsLine + ": history_ids: " + v + " is not a particle's ID"};
   };
   std::vector<DatCase> datCases = {
-      {"unknown parameter", [&] { replaceFirst(dir + "/dat/pdQUserInput.dat", "dt ", "dT "); },
+      {"unknown parameter", [&] { edit(dir + "/dat/pdQUserInput.dat", "dt ", "dT "); },
        "pdQUserInput.dat:3: unknown parameter 'dT'"},
-      {"unknown model", [&] { replaceFirst(dir + "/dat/pdQUserInput.dat", "spring", "sprin"); },
+      {"unknown model", [&] { edit(dir + "/dat/pdQUserInput.dat", "spring", "sprin"); },
        "pdQUserInput.dat:1: unknown model 'sprin' (did you mean 'spring'?)"},
-      {"malformed number", [&] { replaceFirst(dir + "/dat/pdQInput.dat", "0 0 0", "0 x 0"); },
+      {"malformed number", [&] { edit(dir + "/dat/pdQInput.dat", "0 0 0", "0 x 0"); },
        "pdQInput.dat:1: 'x' is not a number"},
-      {"cell size below horizon", [&] { replaceFirst(dir + "/dat/pdQInput.dat", "1.5 ", "1.25 "); },
+      {"cell size below horizon", [&] { edit(dir + "/dat/pdQInput.dat", "1.5 ", "1.25 "); },
        "pdQInput.dat:2: the minimum cell size 1.25 is below the model's horizon 1.5"},
       {"missing file", [&] { fs::remove(dir + "/dat/ParticleAlterAttrs.dat"); },
        "ParticleAlterAttrs.dat: cannot open the file"},
