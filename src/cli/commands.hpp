@@ -61,4 +61,10 @@ struct StrengthCommandOptions {
 };
 void strengthCommand(const StrengthCommandOptions& o);
 
+struct ListOptions {
+  std::string generator;  // one generator's parameters, defaults and ID order
+};
+// Prints on `root` only (every rank checks the generator's name alike).
+void listCommand(const ListOptions& o, bool root);
+
 }  // namespace pdq::cli

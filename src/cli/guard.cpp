@@ -59,9 +59,11 @@ int Guard::run(const std::function<void()>& command) {
   }
   int size = 1;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
-  // Ranks that fail alike (bad input) arrive within moments of each other; a rank that
-  // waits longer than this is alone with its error.
-  if (size == 1 || everyRankFailed(20.0)) {
+  // Ranks that fail alike (bad input, read alike by every rank) arrive within moments of
+  // each other; a rank that waits longer than this is alone with its error (a file only
+  // it writes, a check on its own particles), and the others wait for it in a collective
+  // call: it ends the job.
+  if (size == 1 || everyRankFailed(2.0)) {
     if (rank_ == 0) printError(message);
     return code;
   }

@@ -9,6 +9,7 @@
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
+#include "engine/atomic_file.hpp"
 #include "engine/error.hpp"
 #include "io/restart.hpp"
 #include "io/standard_outputs.hpp"
@@ -81,7 +82,7 @@ void pictureCommand(const PictureCommandOptions& o) {
   if (comm.root()) {
     std::string path = o.out;
     if (path.empty()) {
-      fs::create_directories(outDir);
+      createFolder(outDir);
       path = outDir + "/" + post::PictureOutput::fileName(opt, sim.step());
     }
     post::PictureRequest request = opt.request;

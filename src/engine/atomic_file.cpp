@@ -16,8 +16,11 @@ namespace pdq {
 
 AtomicFile::AtomicFile(std::string path)
     : path_(std::move(path)), tmp_(path_ + ".tmp." + std::to_string(::getpid())) {
+  errno = 0;
   out_.open(tmp_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw Error("cannot write " + path_ + ": cannot create " + tmp_);
+  if (!out_)
+    throw Error("cannot write " + path_ + ": cannot create " + tmp_ +
+                (errno ? std::string(": ") + std::strerror(errno) : std::string()));
 }
 
 AtomicFile::~AtomicFile() {
@@ -101,6 +104,23 @@ void writeFileAtomically(const std::string& path, const std::string& content) {
   AtomicFile f(path);
   f.stream() << content;
   f.commit();
+}
+
+void createFolder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(dir, ec)) return;
+  fs::create_directories(dir, ec);
+  if (!ec) return;
+  // A part of the path that exists but is no folder is the likely cause.
+  for (fs::path p = fs::path(dir).lexically_normal(); !p.empty() && p != p.parent_path();
+       p = p.parent_path()) {
+    std::error_code e;
+    if (fs::exists(p, e) && !fs::is_directory(p, e))
+      throw Error("cannot create the folder " + dir + ": " + p.string() +
+                  " is a file, not a folder");
+  }
+  throw Error("cannot create the folder " + dir + ": " + std::strerror(ec.value()));
 }
 
 AppendFile::~AppendFile() {

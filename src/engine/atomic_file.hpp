@@ -42,6 +42,11 @@ void removeStepFiles(const std::string& dir, const std::string& prefix, const st
 // machine, which a kill while writing leaves behind; returns their names.
 std::vector<std::string> removeStrayTemporaries(const std::string& dir);
 
+// Creates the folder `dir` and its parents (nothing if it exists); an Error naming the
+// folder and the reason otherwise: "cannot create the folder a/out: a is a file, not a
+// folder", or the system's reason ("Permission denied", "Read-only file system").
+void createFolder(const std::string& dir);
+
 class AppendFile {
  public:
   AppendFile() = default;

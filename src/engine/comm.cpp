@@ -157,14 +157,17 @@ void Comm::abort(int code) const {
   std::abort();
 }
 
-MpiSession::MpiSession(int* argc, char*** argv) {
-  int initialised = 0;
+MpiSession::MpiSession(int* argc, char*** argv, bool threadMultiple) {
+  int initialised = 0, provided = 0;
   MPI_Initialized(&initialised);
   if (!initialised) {
-    int provided = 0;
-    MPI_Init_thread(argc, argv, MPI_THREAD_FUNNELED, &provided);
+    MPI_Init_thread(argc, argv, threadMultiple ? MPI_THREAD_MULTIPLE : MPI_THREAD_FUNNELED,
+                    &provided);
     owns_ = true;
+  } else {
+    MPI_Query_thread(&provided);
   }
+  multiple_ = provided >= MPI_THREAD_MULTIPLE;
 }
 
 MpiSession::~MpiSession() {

@@ -62,15 +62,18 @@ class Comm {
 };
 
 // RAII: MPI_Init_thread on construction (if not yet initialised), MPI_Finalize on exit.
+// Only the main thread calls MPI, unless `threadMultiple` asks for MPI_THREAD_MULTIPLE
+// (the pdq command's watchdog thread); threadMultiple() says whether MPI gave it.
 class MpiSession {
  public:
-  MpiSession(int* argc, char*** argv);
+  MpiSession(int* argc, char*** argv, bool threadMultiple = false);
+  bool threadMultiple() const { return multiple_; }
   ~MpiSession();
   MpiSession(const MpiSession&) = delete;
   MpiSession& operator=(const MpiSession&) = delete;
 
  private:
-  bool owns_ = false;
+  bool owns_ = false, multiple_ = false;
 };
 
 }  // namespace pdq

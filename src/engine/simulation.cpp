@@ -199,7 +199,7 @@ void Simulation::setup() {
          << ")x[" << dec_->coreLo(1) << "," << dec_->coreHi(1) << ")x[" << dec_->coreLo(2) << ","
          << dec_->coreHi(2) << "), " << particles_.owned() << " owned, " << particles_.ghosts()
          << " ghosts, " << bonds_.count() << " bonds\n";
-  std::filesystem::create_directories(cfg_.outDir);
+  createFolder(cfg_.outDir);
   // What a run killed while writing left behind.
   if (comm_.root())
     for (const auto& name : removeStrayTemporaries(cfg_.outDir))

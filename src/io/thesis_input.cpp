@@ -207,7 +207,7 @@ Problem readThesisInput(const std::string& dir) {
 }
 
 void writeParticleFiles(const std::string& dir, const ParticleSet& ps, const Schema& schema) {
-  std::filesystem::create_directories(dir);
+  createFolder(dir);
   for (int which = 0; which < 2; ++which) {
     const bool fixed = which == 0;
     AtomicFile f(dir + (fixed ? "/ParticleFixedAttrs.dat" : "/ParticleAlterAttrs.dat"));
@@ -226,7 +226,7 @@ void writeParticleFiles(const std::string& dir, const ParticleSet& ps, const Sch
 }
 
 void writeThesisInput(const std::string& dir, const Problem& pb, const Params& modelParams) {
-  std::filesystem::create_directories(dir);
+  createFolder(dir);
   // pdQInput.dat always states the cell size: a problem's default is the model's own.
   const double cellSize = pb.run.minCellSize > 0 ? pb.run.minCellSize : pb.model->minCellSize();
   std::ostringstream in;

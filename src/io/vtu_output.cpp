@@ -162,10 +162,7 @@ void VtuOutput::write(OutputContext& out) {
 void VtuOutput::writeStep(OutputContext& out, Series& series, const vtu::Piece& piece) {
   const std::string dir = out.outDir + "/" + opt_.name;
   const std::string stem = series.name + "_" + stepTag(out.step);
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (!std::filesystem::is_directory(dir))
-    throw Error("cannot create the ParaView output folder " + dir);
+  createFolder(dir);
   const std::string pieceFile = stem + "_" + std::to_string(out.comm.rank()) + ".vtu";
   {
     AtomicFile f(dir + "/" + pieceFile);

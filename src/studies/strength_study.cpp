@@ -93,7 +93,7 @@ void strengthStudy(const Scenario& sc, const Params& o, Comm& comm, bool resume,
   if (resume) opt.done = strength::readJournal(journal, search, force);
   std::vector<Trial> finished;
   if (comm.root()) {
-    fs::create_directories(dir);
+    createFolder(dir);
     if (!resume) strength::writeJournal(journal, search, finished);
     std::printf("%s", fmt::format("pdq strength: {}, {} particles, {} steps{}; {} load{} per "
                                   "round\n",

@@ -16,6 +16,7 @@
 namespace fs = std::filesystem;
 using namespace pdq::test;
 using testing::HasSubstr;
+using testing::Not;
 
 namespace {
 
@@ -307,4 +308,72 @@ TEST(Reliability, RestartFilesAreReadStrictly) {
   EXPECT_EQ(good.code, 0) << good.all();
   EXPECT_EQ(readFile(dir + "/again/ParticleAlterAttrs.40.rst"),
             readFile(dir + "/out/ParticleAlterAttrs.40.rst"));
+}
+
+namespace {
+
+// The rank (OMPI_COMM_WORLD_RANK) of a process under mpirun, -1 if unknown.
+int rankOf(int pid) {
+  const std::string env = readFile("/proc/" + std::to_string(pid) + "/environ");
+  const std::string key = std::string("OMPI_COMM_WORLD_RANK=");
+  for (std::size_t at = 0; at < env.size(); at = env.find('\0', at) + 1) {
+    if (env.compare(at, key.size(), key) == 0) return std::stoi(env.substr(at + key.size()));
+    if (env.find('\0', at) == std::string::npos) break;
+  }
+  return -1;
+}
+
+int count(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
+}  // namespace
+
+TEST(Reliability, StoppedRankOfFourEndsTheJobNamingIt) {
+  // SIGSTOP leaves a process alive, so MPI does not notice it: the watchdog does.
+  const std::string dir = freshDir("stopped_rank");
+  const std::string sc = longCase(dir, 100000000);
+  const Started run = startPdq({"run", sc, "-q"}, dir, 4);
+  ASSERT_TRUE(waitFor([&] { return newestRestart(dir + "/out") >= 500; }, 120)) << "not stepping";
+  int victim = -1;
+  for (int pid : children(run.pid))
+    if (rankOf(pid) == 2) victim = pid;
+  ASSERT_GT(victim, 0);
+  const auto stopped = std::chrono::steady_clock::now();
+  ASSERT_EQ(kill(victim, SIGSTOP), 0);
+  const auto r = waitPdq(run);
+  EXPECT_LT(secondsSince(stopped), 10);
+  EXPECT_NE(r.code, 0);
+  EXPECT_THAT(r.err, HasSubstr("pdq: error: rank 2 has given no sign of life for"));
+  EXPECT_THAT(r.err, HasSubstr("it is stopped"));
+}
+
+TEST(Reliability, FileErrorOnOneRankEndsTheJobAtOnceWithItsReason) {
+  // Rank 0 alone writes restart files; one it cannot write (a folder holds its name) ends
+  // the job at once, the others being in the next step's exchange, with the reason.
+  const std::string dir = freshDir("one_rank_error");
+  const std::string sc = springCase(dir, 100000000);
+  writeFile(dir + "/out/ParticleAlterAttrs.20.rst/keep", "");
+  const auto started = std::chrono::steady_clock::now();
+  const auto r = runPdq({"run", sc, "-q"}, dir, 2);
+  EXPECT_LT(secondsSince(started), 10);
+  EXPECT_EQ(r.code, 3) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("rank 0: cannot rename"));
+  EXPECT_THAT(r.err, HasSubstr("ParticleAlterAttrs.20.rst: Is a directory"));
+  EXPECT_EQ(count(r.err, "pdq: error:"), 1) << r.err;
+}
+
+TEST(Reliability, OutputFolderUnderAFileIsReportedOnceWithTheCause) {
+  const std::string dir = freshDir("folder_under_file");
+  const std::string sc = springCase(dir, 40);
+  editFile(sc, "dir = \"out\"", "dir = \"plain/out\"");
+  writeFile(dir + "/plain", "a file\n");
+  const auto r = runPdq({"run", sc, "-q"}, dir, 2);
+  EXPECT_EQ(r.code, 3) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("pdq: error: cannot create the folder plain/out: plain is a file, "
+                               "not a folder"));
+  EXPECT_EQ(count(r.err, "pdq: error:"), 1) << r.err;
+  EXPECT_THAT(r.err, Not(HasSubstr("filesystem error")));
 }
