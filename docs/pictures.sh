@@ -27,6 +27,14 @@ cp "$src"/examples/spring/* . 2>/dev/null || true
 "$pdq" post plot melt_out/history.csv -x step -y potential -y kinetic -y total \
   -o "$img/lj_melt_energy.png" --title "LJ melt: energies" --ylabel "energy (reduced units)"
 
+# Peridynamics: the PMB notched plate cracking, the LPS cantilever of thesis Table 3.1.
+"${mpi[@]}" "$pdq" run "$src/examples/pmb/notched_plate.toml" --quiet --out notched_out
+"$pdq" post picture "$src/examples/pmb/notched_plate.toml" \
+  --restart notched_out/ParticleAlterAttrs.1400.rst -o "$img/pmb_notched_plate.png"
+"${mpi[@]}" "$pdq" run "$src/examples/lps/cantilever.toml" --quiet --out cantilever_out
+"$pdq" post picture "$src/examples/lps/cantilever.toml" \
+  --restart cantilever_out/ParticleAlterAttrs.200.rst -o "$img/lps_cantilever.png"
+
 # The RC beam of thesis §4.4.4 at the file's load (examples/mplm/rc_beam.toml).
 "${mpi[@]}" "$pdq" run "$src/examples/mplm/rc_beam.toml" --quiet --out rc_beam_out
 "$pdq" post picture "$src/examples/mplm/rc_beam.toml" --restart rc_beam_out/ParticleAlterAttrs.80000.rst \

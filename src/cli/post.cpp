@@ -2,6 +2,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <filesystem>
 #include <limits>
@@ -34,8 +35,13 @@ std::string latestRestart(const std::string& dir, const std::string& input) {
   for (const auto& e : fs::directory_iterator(dir, ec)) {
     std::smatch m;
     const std::string f = e.path().filename().string();
-    if (std::regex_match(f, m, name) && std::stol(m[1]) > bestStep) {
-      bestStep = std::stol(m[1]);
+    if (!std::regex_match(f, m, name)) continue;
+    // A step beyond any run's (more digits than a long holds) is no restart file of pdq's.
+    long step = -1;
+    const std::string digits = m[1];
+    const auto [end, err] = std::from_chars(digits.data(), digits.data() + digits.size(), step);
+    if (err == std::errc() && step > bestStep) {
+      bestStep = step;
       best = e.path().string();
     }
   }

@@ -34,7 +34,8 @@ std::string nearestName(std::string_view name, const std::vector<std::string>& c
   std::size_t bestDistance = std::max<std::size_t>(2, name.size() / 3) + 1;
   for (const auto& c : candidates) {
     const std::size_t d = editDistance(name, c);
-    if (d < bestDistance) {
+    // A name changed entirely (nu for E) is no typo of it.
+    if (d < bestDistance && d < std::min(name.size(), c.size())) {
       bestDistance = d;
       best = c;
     }

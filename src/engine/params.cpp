@@ -35,6 +35,16 @@ const Params::Value& Params::get(const std::string& key) const {
   asked_.push_back(key);
   auto it = values_.find(key);
   if (it == values_.end()) {
+    // A key given but not read that is close to this one is the likely typo.
+    std::vector<std::string> unread;
+    for (const auto& [k, v] : values_)
+      if (!used_.count(k)) unread.push_back(k);
+    if (const std::string near = nearestName(key, unread); !near.empty()) {
+      const Value& v = values_.at(near);
+      throw InputError(v.file, v.line,
+                       "unknown parameter '" + near + "' for " + owner_ + " (did you mean '" + key +
+                           "'? it is missing)");
+    }
     std::string file = values_.empty() ? owner_ : values_.begin()->second.file;
     throw InputError(file, 0, "missing parameter '" + key + "' for " + owner_);
   }

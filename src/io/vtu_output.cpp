@@ -1,5 +1,7 @@
 #include "io/vtu_output.hpp"
 
+#include <charconv>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -44,9 +46,11 @@ void loadSeries(const std::string& path, long step, std::vector<vtu::SeriesEntry
   std::smatch m;
   while (std::getline(in, line)) {
     if (!std::regex_search(line, m, re)) continue;
-    const long s = std::stol(m[3]);
-    if (s >= step) continue;
-    entries.push_back({std::stod(m[1]), m[2]});
+    long s = 0;
+    const std::string digits = m[3];
+    const auto [end, err] = std::from_chars(digits.data(), digits.data() + digits.size(), s);
+    if (err != std::errc() || s >= step) continue;
+    entries.push_back({std::strtod(m.str(1).c_str(), nullptr), m[2]});
     steps.push_back(s);
   }
 }

@@ -30,7 +30,7 @@ PictureOptions pictureOptions(const Params& t) {
   r.colourBy = t.text("colour_by", r.colourBy);
   r.bondDamage = t.text("bond_damage", r.bondDamage);
   std::tie(r.source, r.colourByLine) = where("colour_by");
-  r.bondDamageLine = where("bond_damage").second;
+  std::tie(r.bondDamageSource, r.bondDamageLine) = where("bond_damage");
   PictureStyle& st = r.style;
   st.magnification = t.number("magnification", st.magnification, 0, 1e12);
   if (t.has("view")) {

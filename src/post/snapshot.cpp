@@ -214,7 +214,7 @@ void checkRequest(const PictureRequest& r, const std::vector<std::string>& names
   }
   const std::string d = damageName(r, bondNames);
   if (!d.empty() && std::find(bondNames.begin(), bondNames.end(), d) == bondNames.end())
-    throw InputError(r.source, r.bondDamageLine,
+    throw InputError(r.bondDamageSource, r.bondDamageLine,
                      "no bond attribute '" + d + "' to draw as damage" + suggestion(d, bondNames));
 }
 

@@ -76,7 +76,8 @@ struct PictureRequest {
   // Only the particles in this slab (reference positions) and the bonds between them.
   Slab slab;
   // Where the names were written, for errors.
-  std::string source = "picture", slabSource = "picture";
+  // Where colour_by, bond_damage and the slab were given (file and line), for messages.
+  std::string source = "picture", bondDamageSource = "picture", slabSource = "picture";
   int colourByLine = 0, bondDamageLine = 0, slabLine = 0;
 };
 

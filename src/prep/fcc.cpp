@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "engine/error.hpp"
+#include "engine/memory.hpp"
 
 namespace pdq {
 
@@ -50,6 +51,8 @@ FccBox makeFcc(const FccSpec& s, ParticleSet& out) {
   // site strictly inside the box, away from the cell boundaries.
   static constexpr double basis[4][3] = {
       {0.25, 0.25, 0.25}, {0.75, 0.75, 0.25}, {0.75, 0.25, 0.75}, {0.25, 0.75, 0.75}};
+  checkParticleCount(4.0 * s.cells[0] * s.cells[1] * s.cells[2],
+                     8.0 * (1 + out.nFixed + out.nAlter), "the fcc lattice");
   const std::size_t first = out.size();
   Gid id = s.firstId;
   for (int k = 0; k < s.cells[2]; ++k)
@@ -112,6 +115,8 @@ std::vector<std::array<double, 3>> closePackedBox(const ClosePacked& L,
                                   " m along " + names[k] + " is less than the lattice's stride " +
                                   std::to_string(need[k]) + " m there (two particles at least)");
   const double tol = 1e-9 * s;
+  checkParticleCount((size[z] / h + 1) * (size[c] / p + 1) * (size[a] / s + 1),
+                     sizeof(std::array<double, 3>), "the close-packed lattice");
   std::vector<std::array<double, 3>> pts;
   for (long k = 0; k * h <= size[z] + tol; ++k) {
     const int phase = static_cast<int>(k % 3);  // A, B, C

@@ -45,6 +45,14 @@ Generated fcc(const Params& p, const Schema& schema) {
 }  // namespace
 
 PDQ_REGISTER_GENERATOR(fcc, "fcc",
-                       "fcc crystal filling a periodic box: cells, density, temperature, seed");
+                       "fcc crystal filling a periodic box: cells, density, temperature, seed\n"
+                       "  cells        [nx, ny, nz] unit cells of 4 sites (required)\n"
+                       "  density      sites per unit volume (required)\n"
+                       "  temperature  initial velocities from Maxwell-Boltzmann (default 0)\n"
+                       "  mass         each particle's mass for the velocities (default 1)\n"
+                       "  seed         of the velocities' random numbers (default 1)\n"
+                       "  first_id     ID of the first site (default 1)\n"
+                       "  IDs          from first_id: the 4 sites of a cell, cells X fastest, "
+                       "then Y, then Z; the box is the cells'");
 
 }  // namespace pdq

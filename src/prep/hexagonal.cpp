@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/memory.hpp"
+
 namespace pdq::prep {
 
 HexOrientation hexOrientation(const std::string& name) {
@@ -21,6 +23,8 @@ std::vector<std::array<double, 2>> hexagonalRectangle(double lx, double ly, doub
   // Work in (along, across) coordinates: `along` the bonded rows, `across` between them.
   const double along = alongX ? lx : ly, across = alongX ? ly : lx;
   const double p = hexPitch(s), tol = 1e-9 * s;
+  checkParticleCount((across / p + 1) * (along / s + 1), sizeof(std::array<double, 2>),
+                     "the hexagonal lattice");
   std::vector<std::array<double, 2>> pts;
   for (long r = 0; r * p <= across + tol; ++r) {
     const double shift = (r % 2) ? s / 2 : 0.0;

@@ -1,6 +1,7 @@
 #include "prep/lattice.hpp"
 
 #include "engine/error.hpp"
+#include "engine/memory.hpp"
 
 namespace pdq::prep {
 
@@ -8,6 +9,8 @@ std::size_t appendLattice(ParticleSet& ps, const Lattice& L) {
   if (L.n[0] < 1 || L.n[1] < 1 || L.n[2] < 1 || !(L.spacing > 0))
     throw InputError("lattice", 0,
                      "a lattice needs at least one point per axis and a positive spacing");
+  checkParticleCount(double(L.n[0]) * L.n[1] * L.n[2], 8.0 * (1 + ps.nFixed + ps.nAlter),
+                     "the lattice");
   const std::size_t first = ps.size();
   const std::size_t total = std::size_t(L.n[0]) * L.n[1] * L.n[2];
   ps.gid.reserve(first + total);

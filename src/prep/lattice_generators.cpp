@@ -5,7 +5,11 @@
 //     ny = 40
 //     spacing = 0.01
 //     origin = [0, 0, 0]        # optional; first_id = 1 optional
+// IDs run from first_id with X fastest, then Y, then Z. A model with a "volume" attribute
+// gets each particle's cell volume.
 #include <algorithm>
+#include <cmath>
+#include <limits>
 
 #include "engine/error.hpp"
 #include "prep/generator.hpp"
@@ -14,15 +18,18 @@
 namespace pdq::prep {
 namespace {
 
-Generated lattice(const Params& p, const Schema& schema, bool cubic) {
+Generated lattice(const Params& p, const Schema& schema, const Params& model, bool cubic) {
   Lattice L;
   const char* keys[3] = {"nx", "ny", "nz"};
   for (int a = 0; a < (cubic ? 3 : 2); ++a) {
-    const long n = p.integer(keys[a]);
-    if (n < 1 || n > 100000000) {
-      const auto v = p.raw(keys[a]);
+    const double n = p.number(keys[a]);
+    const auto v = p.raw(keys[a]);
+    if (n < 1 || n != std::floor(n))
       throw InputError(v->file, v->line, std::string(keys[a]) + " must be a whole number >= 1");
-    }
+    if (n > std::numeric_limits<int>::max())
+      throw InputError(v->file, v->line,
+                       std::string(keys[a]) + " = " + v->text + " exceeds the largest count " +
+                           "along an axis, " + std::to_string(std::numeric_limits<int>::max()));
     L.n[a] = static_cast<int>(n);
   }
   L.spacing = p.number("spacing", 1.0, 1e-300, 1e300);
@@ -39,16 +46,41 @@ Generated lattice(const Params& p, const Schema& schema, bool cubic) {
   g.particles.nFixed = schema.nFixed();
   g.particles.nAlter = schema.nAlter();
   appendLattice(g.particles, L);
+  // A model whose particles carry a volume (peridynamics) gets each point's cell: s^3, or
+  // s^2 times the model's thickness in 2D. [[particles.set]] may still override it.
+  if (const int vol = schema.fixedIndex("volume"); vol >= 0) {
+    const double s = L.spacing;
+    const double v = cubic ? s * s * s : s * s * model.number("thickness", 1.0);
+    for (std::size_t k = 0; k < g.particles.size(); ++k) g.particles.fixedRow(k)[vol] = v;
+  }
   return g;
 }
 
-Generated square(const Params& p, const Schema& s) { return lattice(p, s, false); }
-Generated cubic(const Params& p, const Schema& s) { return lattice(p, s, true); }
+Generated square(const Params& p, const Schema& s, const Params& m) {
+  return lattice(p, s, m, false);
+}
+Generated cubic(const Params& p, const Schema& s, const Params& m) {
+  return lattice(p, s, m, true);
+}
 
 }  // namespace
 
-PDQ_REGISTER_GENERATOR(square, "square", "square lattice (2D): nx, ny, spacing, origin, first_id");
+PDQ_REGISTER_GENERATOR(square, "square",
+                       "square lattice (2D): nx, ny, spacing, origin, first_id\n"
+                       "  nx, ny      points along X and Y (required; whole numbers >= 1)\n"
+                       "  spacing     distance between neighbours (default 1)\n"
+                       "  origin      [x, y, z] of the first point (default [0, 0, 0])\n"
+                       "  first_id    ID of the first point (default 1)\n"
+                       "  IDs         from first_id, X fastest, then Y\n"
+                       "  volume      set for models that have one: spacing^2 x [model] "
+                       "thickness (default 1)");
 PDQ_REGISTER_GENERATOR(cubic, "cubic",
-                       "simple-cubic lattice (3D): nx, ny, nz, spacing, origin, first_id");
+                       "simple-cubic lattice (3D): nx, ny, nz, spacing, origin, first_id\n"
+                       "  nx, ny, nz  points along X, Y and Z (required; whole numbers >= 1)\n"
+                       "  spacing     distance between neighbours (default 1)\n"
+                       "  origin      [x, y, z] of the first point (default [0, 0, 0])\n"
+                       "  first_id    ID of the first point (default 1)\n"
+                       "  IDs         from first_id, X fastest, then Y, then Z\n"
+                       "  volume      set for models that have one: spacing^3");
 
 }  // namespace pdq::prep

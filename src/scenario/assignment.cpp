@@ -47,6 +47,12 @@ Assignment readAssignment(const Params& p, const std::string& file, int line) {
   Assignment a;
   a.file = file;
   a.line = line;
+  if (!p.has("attribute"))
+    throw InputError(file, line,
+                     p.keys().empty() ? "this [[particles.set]] entry is empty (is its header "
+                                        "written twice?); give attribute = \"...\" and its value"
+                                      : "this [[particles.set]] entry needs attribute = \"...\" "
+                                        "(the attribute it sets)");
   a.attribute = p.text("attribute");
   a.attributeLine = p.raw("attribute")->line;
   a.value = p.number("value", 0.0);
@@ -62,8 +68,9 @@ Assignment readAssignment(const Params& p, const std::string& file, int line) {
   return a;
 }
 
-void applyAssignments(ParticleSet& ps, const Schema& schema,
-                      const std::vector<Assignment>& entries) {
+std::vector<std::size_t> applyAssignments(ParticleSet& ps, const Schema& schema,
+                                          const std::vector<Assignment>& entries) {
+  std::vector<std::size_t> counts;
   for (const Assignment& a : entries) {
     const int fixedCol = schema.fixedIndex(a.attribute), alterCol = schema.alterIndex(a.attribute);
     if ((fixedCol >= 0 && fixedCol < 3) || (alterCol >= 0 && alterCol < 3))
@@ -94,7 +101,9 @@ void applyAssignments(ParticleSet& ps, const Schema& schema,
       throw InputError(a.file, a.line,
                        "this [[particles.set]] entry selects no particle (check its x, y, z "
                        "ranges and ids against the particles' reference positions)");
+    counts.push_back(selected);
   }
+  return counts;
 }
 
 }  // namespace pdq

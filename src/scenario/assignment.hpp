@@ -44,8 +44,9 @@ struct Assignment {
 Assignment readAssignment(const Params& entry, const std::string& file, int line);
 
 // Throws InputError at the entry's line for an unknown attribute (suggesting the nearest
-// name), a position column, or an entry that selects no particle.
-void applyAssignments(ParticleSet& particles, const Schema& schema,
-                      const std::vector<Assignment>& entries);
+// name), a position column, or an entry that selects no particle. Returns how many
+// particles each entry selected, in order.
+std::vector<std::size_t> applyAssignments(ParticleSet& particles, const Schema& schema,
+                                          const std::vector<Assignment>& entries);
 
 }  // namespace pdq

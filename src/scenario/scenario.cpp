@@ -10,6 +10,7 @@
 #include <set>
 
 #include "engine/error.hpp"
+#include "engine/memory.hpp"
 #include "io/thesis_input.hpp"
 #include "io/vtu_output.hpp"
 #include "post/picture_output.hpp"
@@ -145,7 +146,11 @@ Generated readParticles(const toml::table& root, const std::string& file, Scenar
     // The generator's own errors name the generator's line.
     gp.set("generator", name->text, file, name->line);
     gp.accept("generator");
-    g = gen(gp, schema, sc.modelParams);
+    try {
+      g = gen(gp, schema, sc.modelParams);
+    } catch (const MemoryError& e) {
+      throw InputError(file, name->line, "generator '" + name->text + "': " + e.what());
+    }
     gp.checkAllUsed();
     sc.generator = name->text;
     sc.generatorParams = gp;
@@ -189,7 +194,9 @@ Generated readParticles(const toml::table& root, const std::string& file, Scenar
     for (auto&& e : *arr)
       entries.push_back(
           readAssignment(tableParams(*e.as_table(), file, "[[particles.set]]"), file, lineOf(e)));
-    applyAssignments(g.particles, schema, entries);
+    const auto counts = applyAssignments(g.particles, schema, entries);
+    for (std::size_t k = 0; k < entries.size(); ++k)
+      sc.setCounts.push_back({entries[k].line, entries[k].attribute, counts[k]});
   }
   return g;
 }

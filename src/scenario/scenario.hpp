@@ -14,6 +14,7 @@
 // Every value keeps its file and line; a key nobody reads is an error at its line with
 // the nearest known key suggested.
 #include <string>
+#include <vector>
 
 #include "engine/params.hpp"
 #include "engine/problem.hpp"
@@ -34,6 +35,13 @@ struct Scenario {
   // [strength.model]: model parameters for the search's trials only (e.g. a larger time
   // step by rotary-inertia scaling, which leaves statics unchanged).
   Params strengthModel{"[strength.model]"};
+  // What each [[particles.set]] entry selected (pdq info lists it).
+  struct SetCount {
+    int line;
+    std::string attribute;
+    std::size_t particles;
+  };
+  std::vector<SetCount> setCounts;
 };
 
 // Reads a TOML scenario: creates and configures the model, builds or reads the particles

@@ -3,6 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <functional>
 
@@ -12,6 +14,7 @@
 namespace fs = std::filesystem;
 using namespace pdq::test;
 using testing::HasSubstr;
+using testing::Not;
 
 namespace {
 
@@ -227,4 +230,102 @@ dir = "out"
       EXPECT_FALSE(fs::exists(dir + "/out"));
     }
   }
+}
+
+// Sizes checked before allocation, typos, generators' limits and pictures' keys: each
+// message names the file and line of the true cause.
+TEST(CliBadInput, SizesTyposAndGeneratorsNameTheTrueCause) {
+  const std::string pmb = R"(steps = 10
+[model]
+name = "pmb"
+E = 1e9
+horizon = 3.1
+density = 1000
+dt = 1e-6
+[particles]
+generator = "square"
+nx = 20
+ny = 10
+[[particles.set]]
+attribute = "vx"
+value = 1
+x = [0, 0]
+)";
+  const std::string plate = R"(steps = 10
+[model]
+name = "mplm2d"
+[particles]
+generator = "mplm_plate"
+width = 0.1
+height = 0.12
+)";
+  const std::string beam = R"(steps = 10
+[model]
+name = "mplm2d"
+[particles]
+generator = "mplm_beam"
+span = 1.0
+)";
+  struct SizeCase {
+    const char* name;
+    std::string scenario, from, to, expected, memory = "";
+  };
+  const std::vector<SizeCase> sizeCases = {
+      {"a missing key's typo", pmb, "horizon", "horizn",
+       "pb.toml:5: unknown parameter 'horizn' for model 'pmb' ([model]) (did you mean "
+       "'horizon'? it is missing)"},
+      {"no suggestion of another parameter", pmb, "E = 1e9", "E = 1e9\nnu = 0.25",
+       "pb.toml:5: unknown parameter 'nu' for model 'pmb' ([model])\n"},
+      {"duplicated set header", pmb, "[[particles.set]]", "[[particles.set]]\n[[particles.set]]",
+       "pb.toml:12: this [[particles.set]] entry is empty (is its header written twice?)"},
+      {"10^10 particles", pmb, "nx = 20", "nx = 1e9",
+       "pb.toml:9: generator 'square': the lattice would make about 1e+10 particles"},
+      {"beyond an axis's count", pmb, "nx = 20", "nx = 1e10",
+       "pb.toml:10: nx = 10000000000 exceeds the largest count along an axis, 2147483647"},
+      {"more than the memory given", pmb, "nx = 20\nny = 10", "nx = 1000\nny = 1000",
+       "this machine has 1 MB available", "1M"},
+      {"a 1e9 m beam", beam, "span = 1.0", "span = 1e9",
+       "pb.toml:5: generator 'mplm_beam': "},
+      {"a plate of no height", plate, "height = 0.12", "height = 0.0",
+       "pb.toml:7: height = 0 m is less than the lattice's stride"},
+  };
+  for (const auto& c : sizeCases) {
+    SCOPED_TRACE(c.name);
+    const std::string dir = freshDir("bad_input_sizes");
+    writeFile(dir + "/pb.toml", c.scenario);
+    editFile(dir + "/pb.toml", c.from, c.to);
+    if (!c.memory.empty()) setenv("PDQ_MEMORY_LIMIT", c.memory.c_str(), 1);
+    const auto started = std::chrono::steady_clock::now();
+    const auto r = runPdq({"info", "pb.toml"}, dir);
+    unsetenv("PDQ_MEMORY_LIMIT");
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
+              10);
+    EXPECT_EQ(r.code, 1) << r.all();
+    EXPECT_THAT(r.err + "\n", HasSubstr(c.expected));
+    EXPECT_THAT(r.err, Not(HasSubstr("did you mean 'E'")));
+  }
+  // The square lattice gives PMB's particles their volume, and pdq info counts what each
+  // [[particles.set]] selects.
+  const std::string dir = freshDir("bad_input_sizes_ok");
+  writeFile(dir + "/pb.toml", pmb);
+  const auto info = runPdq({"info", "pb.toml"}, dir);
+  EXPECT_EQ(info.code, 0) << info.all();
+  EXPECT_THAT(info.out, HasSubstr("particles.set pb.toml:12: vx on 10 particles"));
+}
+
+TEST(CliBadInput, PicturesNameTheirFileLineAndTrueCause) {
+  const std::string dir = freshDir("bad_input_picture");
+  const std::string sc = springCase(dir, 40);
+  // A restart file whose step no long holds is not pdq's: it is passed over.
+  writeFile(dir + "/out/ParticleAlterAttrs.99999999999999999999.rst", "");
+  auto r = runPdq({"post", "picture", sc}, dir);
+  EXPECT_EQ(r.code, 1) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("no restart file (ParticleAlterAttrs.<step>.rst) in out"));
+  // bond_damage's line with the scenario's name, not the table's.
+  const std::string text = readFile(sc) + "[output.picture]\nbond_damage = \"nothing\"\n";
+  writeFile(sc, text);
+  const std::string line = std::to_string(std::count(text.begin(), text.end(), '\n'));
+  r = runPdq({"run", sc}, dir);
+  EXPECT_EQ(r.code, 1) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("lattice.toml:" + line + ": no bond attribute 'nothing'"));
 }

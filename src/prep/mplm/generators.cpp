@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <tuple>
 
 #include "engine/error.hpp"
 #include "models/mplm/2d/attributes.hpp"
@@ -145,6 +146,21 @@ PlateSpec plateSpec(const Params& p, const Params& model) {
   s.loaded = loading != "none";
   s.stress = p.number("stress", s.stress, 1e-300, big);
   s.traction = p.flag("traction", s.traction);
+  // Two rows and two particles a row at least, or the plate is not two-dimensional.
+  const bool alongX = s.orientation == "x";
+  const double pitch = prep::hexPitch(s.spacing);
+  for (const auto& [key, size, least] :
+       {std::tuple{"width", s.width, alongX ? s.spacing : pitch},
+        std::tuple{"height", s.height, alongX ? pitch : s.spacing}})
+    if (size < least) {
+      const auto v = p.raw(key);
+      throw InputError(v ? v->file : p.owner(), v ? v->line : 0,
+                       std::string(key) + " = " + numberText(size) +
+                           " m is less than the lattice's stride " + numberText(least) +
+                           " m across it (spacing " + numberText(s.spacing) +
+                           " m): the plate would be a single row of particles; give at least " +
+                           numberText(least));
+    }
   return s;
 }
 
@@ -169,9 +185,29 @@ BeamSpec beamSpec(const Params& p, const Params& model) {
 
 PDQ_REGISTER_GENERATOR(plateGenerator, "mplm_plate",
                        "MPLM plate loaded along Y at both ends (thesis §4.4.1-2): width, height, "
-                       "orientation, loading, stress, traction");
+                       "orientation, loading, stress, traction\n"
+                       "  width, height  the plate along X and Y in m (default 0.14, 0.24)\n"
+                       "  orientation    \"x\": bonds along X, \"y\": along Y (default x)\n"
+                       "  loading        tension, compression or none (default tension)\n"
+                       "  stress         peak stress on the section at load_scale 1, Pa "
+                       "(default 1e6)\n"
+                       "  traction       share the load by tributary width (default false)\n"
+                       "  spacing, thickness: the [model]'s\n"
+                       "  IDs            from 0, row by row from the bottom, along each row");
 PDQ_REGISTER_GENERATOR(beamGenerator, "mplm_beam",
                        "MPLM simply supported beam with bars and stirrups (thesis §4.4.3-6): "
-                       "span, depth, bar_*, stirrup_*, supports, support_width, line_load");
+                       "span, depth, bar_*, stirrup_*, supports, support_width, line_load\n"
+                       "  span, depth       in m (default 1.16, 0.26)\n"
+                       "  bar_diameter      longitudinal bar, m (default 0: plain concrete)\n"
+                       "  bar_centroid      its height above the bottom, m (default 0.02)\n"
+                       "  stirrup_diameter  m (default 0: none); stirrup_first 0.04, "
+                       "stirrup_spacing 0.15, stirrup_cover 0.02\n"
+                       "  supports          simple, bearings or none (default simple); "
+                       "support_width 0.04\n"
+                       "  line_load         on the top layer at load_scale 1, N/m (default "
+                       "1e3)\n"
+                       "  spacing, thickness: the [model]'s\n"
+                       "  IDs               from 0: the concrete row by row from the bottom, "
+                       "then each bar's particles along it");
 
 }  // namespace pdq::mplm

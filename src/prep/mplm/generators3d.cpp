@@ -98,8 +98,7 @@ Generated beam3d(const Params& p, const Schema& schema, const Params& model) {
   };
   if (supports == "clamped" &&
       static_cast<double>(clampedPlanes + 1) * pitch[0] > length + 1e-9 * s)
-    fail(p, "clamped_planes leaves no free plane of particles along the length",
-         "clamped_planes");
+    fail(p, "clamped_planes leaves no free plane of particles along the length", "clamped_planes");
   const auto bottom = [&](bool left) {
     return mplm::select(ps, [&](const double* f) {
       return fromLow(f, 1, 1) && (left ? f[0] <= supportWidth : f[0] >= length - supportWidth);
@@ -107,8 +106,7 @@ Generated beam3d(const Params& p, const Schema& schema, const Params& model) {
   };
   if (supports == "clamped") {
     const auto held = static_cast<double>(clampedPlanes);
-    constrain(ps, mplm::select(ps, [&](const double* f) { return fromLow(f, 0, held); }),
-              FIX_ALL);
+    constrain(ps, mplm::select(ps, [&](const double* f) { return fromLow(f, 0, held); }), FIX_ALL);
   } else if (supports == "simple") {
     constrain(ps, bottom(true), FIX_X | FIX_Y | FIX_Z);
     constrain(ps, bottom(false), FIX_Y | FIX_Z);
@@ -116,18 +114,16 @@ Generated beam3d(const Params& p, const Schema& schema, const Params& model) {
     const auto left = bottom(true), right = bottom(false);
     constrain(ps, left, REST_Y | FIX_Z);
     constrain(ps, right, REST_Y | FIX_Z);
-    constrain(ps, mplm::select(ps, [&](const double* f) {
-                return fromLow(f, 1, 1) && fromLow(f, 0, 1);
-              }),
-              FIX_X);
+    constrain(
+        ps, mplm::select(ps, [&](const double* f) { return fromLow(f, 1, 1) && fromLow(f, 0, 1); }),
+        FIX_X);
   }
   if (loading == "tip") {
     const auto end = mplm::select(ps, [&](const double* f) { return fromHigh(f, 0, 1); });
     load3(ps, end, load);
     monitor(ps, end);
   } else if (loading == "top") {
-    load3(ps, mplm::select(ps, [&](const double* f) { return fromHigh(f, 1, 1); }),
-          load * length);
+    load3(ps, mplm::select(ps, [&](const double* f) { return fromHigh(f, 1, 1); }), load * length);
     // Midspan bottom: the bottom plane's particles within half a plane of X = length / 2.
     monitor(ps, mplm::select(ps, [&](const double* f) {
               return fromLow(f, 1, 1) && std::fabs(f[0] - length / 2) <= pitch[0] / 2;
@@ -143,6 +139,13 @@ Generated beam3d(const Params& p, const Schema& schema, const Params& model) {
 PDQ_REGISTER_GENERATOR(beam3d, "mplm3d_beam",
                        "3D MPLM member (fcc lattice): length, depth, width, bonds_along, "
                        "layers_along, supports (clamped, simple, bearings), loading (tip, top), "
-                       "load");
+                       "load\n"
+                       "  length, depth, width  along X, Y, Z in m (default 2.0, 0.35, 0.16)\n"
+                       "  bonds_along, layers_along  axes x, y or z (default x, z)\n"
+                       "  supports       clamped, simple, bearings or none (default clamped); "
+                       "clamped_planes 2, support_width 0.04\n"
+                       "  loading        tip, top or none (default tip); load, N (default 1)\n"
+                       "  spacing: the [model]'s\n"
+                       "  IDs            from 0, layer by layer, row by row, along each row");
 
 }  // namespace pdq::mplm3d

@@ -5,6 +5,7 @@
 #include <limits>
 #include <map>
 
+#include "engine/memory.hpp"
 #include "models/mplm/2d/attributes.hpp"
 
 namespace pdq::mplm {
@@ -17,6 +18,8 @@ ParticleSet newParticleSet() {
 }
 
 void addConcrete(ParticleSet& ps, const std::vector<std::array<double, 2>>& points) {
+  checkParticleCount(static_cast<double>(ps.size() + points.size()),
+                     8.0 * (1 + ps.nFixed + ps.nAlter), "the specimen");
   for (const auto& p : points) ps.add(static_cast<Gid>(ps.size()), p[0], p[1], 0.0);
 }
 
