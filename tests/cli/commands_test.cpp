@@ -51,6 +51,20 @@ TEST(Cli, ListNamesModelsAndGenerators) {
   EXPECT_EQ(r.code, 0) << r.all();
   EXPECT_THAT(r.out, HasSubstr("spring"));
   EXPECT_THAT(r.out, HasSubstr("generators"));
+  // Each generator's page: its parameters with their defaults and the order of its IDs.
+  for (const char* g : {"square", "cubic", "fcc", "mplm_plate", "mplm_beam", "mplm3d_beam"}) {
+    SCOPED_TRACE(g);
+    const auto page = runPdq({"list", "--generator", g});
+    EXPECT_EQ(page.code, 0) << page.all();
+    EXPECT_THAT(page.out, HasSubstr(std::string(g) + ": "));
+    EXPECT_THAT(page.out, HasSubstr("default"));
+    EXPECT_THAT(page.out, HasSubstr("  IDs "));
+  }
+  EXPECT_THAT(runPdq({"list", "--generator", "square"}).out,
+              HasSubstr("IDs         from first_id, X fastest, then Y"));
+  const auto wrong = runPdq({"list", "--generator", "squar"});
+  EXPECT_EQ(wrong.code, 1);
+  EXPECT_THAT(wrong.err, HasSubstr("unknown generator 'squar' (did you mean 'square'?)"));
 }
 
 TEST(Cli, InfoDescribesTheProblemAndWritesNothing) {
