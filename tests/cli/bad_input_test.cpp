@@ -293,7 +293,7 @@ span = 1.0
     SCOPED_TRACE(c.name);
     const std::string dir = freshDir("bad_input_sizes");
     writeFile(dir + "/pb.toml", c.scenario);
-    editFile(dir + "/pb.toml", c.from, c.to);
+    edit(dir + "/pb.toml", c.from, c.to);
     if (!c.memory.empty()) setenv("PDQ_MEMORY_LIMIT", c.memory.c_str(), 1);
     const auto started = std::chrono::steady_clock::now();
     const auto r = runPdq({"info", "pb.toml"}, dir);

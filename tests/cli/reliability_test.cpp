@@ -368,7 +368,7 @@ TEST(Reliability, FileErrorOnOneRankEndsTheJobAtOnceWithItsReason) {
 TEST(Reliability, OutputFolderUnderAFileIsReportedOnceWithTheCause) {
   const std::string dir = freshDir("folder_under_file");
   const std::string sc = springCase(dir, 40);
-  editFile(sc, "dir = \"out\"", "dir = \"plain/out\"");
+  edit(sc, "dir = \"out\"", "dir = \"plain/out\"");
   writeFile(dir + "/plain", "a file\n");
   const auto r = runPdq({"run", sc, "-q"}, dir, 2);
   EXPECT_EQ(r.code, 3) << r.all();
