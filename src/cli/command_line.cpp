@@ -73,8 +73,9 @@ CommandLine parseCommandLine(int argc, const char* const* argv) {
                     "many seconds (stopped or lost; default 5, 0: never)")
         ->check(CLI::Range(0.0, 1e9));
   };
-  auto addPlugin = [&](CLI::App* c) {
-    c->add_option("--plugin", plugins, "shared library with more models or generators (repeatable)")
+  auto addPlugin = [&](CLI::App* cmd) {
+    cmd->add_option("--plugin", plugins,
+                    "shared library with more models or generators (repeatable)")
         ->check(CLI::ExistingFile)
         ->take_all();
   };
@@ -189,7 +190,7 @@ CommandLine parseCommandLine(int argc, const char* const* argv) {
   // An unknown command: say so with the nearest one, rather than CLI11's generic message.
   if (argc > 1 && argv[1][0] != '-') {
     std::vector<std::string> names;
-    for (const CLI::App* c : app.get_subcommands({})) names.push_back(c->get_name());
+    for (const CLI::App* cmd : app.get_subcommands({})) names.push_back(cmd->get_name());
     if (std::find(names.begin(), names.end(), argv[1]) == names.end()) {
       return ended(BadCommand, "",
                    "unknown command '" + std::string(argv[1]) + "'" +
