@@ -1,0 +1,53 @@
+#include "fuzz_support.hpp"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace pdq::fuzz {
+
+namespace fs = std::filesystem;
+
+namespace {
+struct Folder {
+  std::string path;
+  Folder() {
+    path = (fs::temp_directory_path() / ("pdq_fuzz." + std::to_string(getpid()))).string();
+    fs::create_directories(path);
+  }
+  ~Folder() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+}  // namespace
+
+const std::string& workDir() {
+  static const Folder folder;
+  return folder.path;
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << text;
+}
+
+std::vector<std::string> split(const std::uint8_t* data, std::size_t size, std::size_t parts) {
+  const std::string all(reinterpret_cast<const char*>(data), size), cut = "\n%%\n";
+  std::vector<std::string> out;
+  std::size_t from = 0;
+  while (out.size() + 1 < parts) {
+    const auto at = all.find(cut, from);
+    if (at == std::string::npos) break;
+    out.push_back(all.substr(from, at - from + 1));
+    from = at + cut.size();
+  }
+  out.push_back(all.substr(std::min(from, all.size())));
+  out.resize(parts);
+  return out;
+}
+
+void limitMemory() { setenv("PDQ_MEMORY_LIMIT", "200M", 1); }
+
+}  // namespace pdq::fuzz

@@ -1,0 +1,21 @@
+#pragma once
+// What the fuzz targets share: a private folder to write their inputs into, the input cut
+// into files, and the one answer to bad input pdq allows (pdq::Error).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pdq::fuzz {
+
+// A folder of this process's own, made once (removed at exit).
+const std::string& workDir();
+void writeFile(const std::string& path, const std::string& text);
+// The input cut at each "\n%%\n" into at most `parts` texts (the last keeps the rest);
+// missing parts are empty.
+std::vector<std::string> split(const std::uint8_t* data, std::size_t size, std::size_t parts);
+// Sets the memory pdq believes the machine has, so that a scenario asking for more is
+// refused before it allocates rather than exhausting the fuzzer's limit.
+void limitMemory();
+
+}  // namespace pdq::fuzz
