@@ -315,6 +315,7 @@ bool Simulation::relaxLoadStep() {
                        what.str() +
                            "; raise max_iterations or use more load_steps (or the "
                            "structure is a mechanism: check its supports)");
+    last_.beyond = factor;
     ctx_->setStaticFactor(previous);
     forces();  // the last equilibrium's forces again (its damage is already committed)
     std::ostringstream reason;

@@ -101,10 +101,11 @@ class Simulation {
 
   // Quasi-static: the last converged load step (the fraction of load_scale reached, the
   // load factor, the curve's load and displacement, the relative residual, the iterations
-  // and the broken interactions).
+  // and the broken interactions; when the run ended for want of equilibrium, `beyond`).
   struct LoadStep {
     double fraction = 0, factor = 0, load = 0, displacement = 0, relative = 0;
     long iterations = 0, broken = 0;
+    double beyond = 0;  // the smallest load factor tried beyond it that found no equilibrium
   };
   const LoadStep& lastLoadStep() const { return last_; }
 

@@ -282,4 +282,53 @@ Result findStrength(const Case& c, double lo, double hi, Comm& comm, const Optio
   return out;
 }
 
+Result staticStrength(const Case& c, double hi, Comm& comm, const StaticOptions& opt) {
+  RunConfig run = c.run;
+  run.procs = {0, 0, 0};
+  run.loading = {};
+  run.loading.scale = hi / c.unitLoad;
+  run.solver.quasiStatic = true;
+  run.solver.tolerance = opt.tolerance;
+  run.solver.loadSteps = opt.loadSteps;
+  run.solver.maxIterations = opt.maxIterations;
+  run.solver.maxBroken = opt.maxBroken;
+  run.solver.maxCutBacks = opt.maxCutBacks;
+  run.steps = opt.loadSteps;
+  Trial tr;
+  tr.index = 1;
+  tr.dir = opt.outDir.empty() ? "" : opt.outDir + "/quasi_static";
+  run.outDir = tr.dir.empty() ? "." : tr.dir;
+  auto simPtr = simulation(c, c.params, run, comm);
+  Simulation& sim = *simPtr;
+  const StrengthSpec spec = sim.model().strengthSpec();
+  if (spec.load.empty() || spec.displacement.empty() || !spec.failureMode)
+    throw InputError(c.source, 0, "model " + c.model + " declares no strength spec");
+  if (!tr.dir.empty()) {
+    OutputSettings out;  // the load–displacement history and the state at the peak
+    out.globalsEvery = 1;
+    addStandardOutputs(sim, out);
+  }
+  while (sim.advance()) {
+  }
+  const auto names = sim.model().globals();
+  const auto values = sim.model().globalValues(sim.context());
+  const auto uAt = positions(c, names, spec.displacement);
+  double u = std::fabs(values[uAt[0]]);
+  for (std::size_t k = 1; k < uAt.size(); ++k) u = std::hypot(u, values[uAt[k]]);
+  tr.uHold = tr.uMid = tr.uEnd = u;
+  tr.brokenMid = tr.brokenEnd = values[positions(c, names, {spec.damage})[0]];
+  tr.steps = sim.step();
+  tr.mode = spec.failureMode(sim.context());
+  if (!tr.dir.empty()) sim.finish();
+  const Simulation::LoadStep& last = sim.lastLoadStep();
+  Result r;
+  r.lower = last.factor * c.unitLoad;
+  r.upper = last.beyond > 0 ? last.beyond * c.unitLoad : -1;
+  r.mode = tr.mode;
+  tr.holds = r.upper < 0;
+  tr.load = tr.holds ? r.lower : r.upper;
+  r.trials = {tr};
+  return r;
+}
+
 }  // namespace pdq::strength

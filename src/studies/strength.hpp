@@ -82,4 +82,18 @@ struct Result {
 // (evenly spaced inside the bracket). Loads are in the case's unit (load_scale × unitLoad).
 Result findStrength(const Case& c, double lo, double hi, Comm& comm, const Options& opt = {});
 
+// Strength in one run: the quasi-static solver (engine/relaxation.cpp) under force control
+// raises the loads towards `hi` in load steps, cut back where they find no equilibrium, until
+// even the smallest step finds none. The result brackets the peak between the last load in
+// equilibrium (`lower`) and the smallest beyond it that found none (`upper`; -1 if `hi` was
+// reached); its one trial is the run (its outputs, the curve and the state at the peak, in
+// outDir/quasi_static).
+struct StaticOptions {
+  double tolerance = 1e-4;
+  long loadSteps = 20, maxIterations = 20000, maxBroken = 0;
+  int maxCutBacks = 8;
+  std::string outDir;
+};
+Result staticStrength(const Case& c, double hi, Comm& comm, const StaticOptions& opt);
+
 }  // namespace pdq::strength

@@ -87,6 +87,16 @@ void strengthStudy(const Scenario& sc, const Params& o, Comm& comm, bool resume,
   const double reference = o.number("reference", 0.0);
   if (!(hi > lo))
     throw InputError(pb.source, o.raw("hi") ? o.raw("hi")->line : 0, "hi must exceed lo");
+  // The method: the dynamic bisection, or one quasi-static run towards hi.
+  const bool oneRun =
+      o.choice("method", "bisection", {"bisection", "quasi_static"}) == "quasi_static";
+  strength::StaticOptions so;
+  so.tolerance = o.number("qs_tolerance", so.tolerance, 1e-300, 1);
+  so.loadSteps = static_cast<long>(o.number("qs_load_steps", so.loadSteps, 1, 1e9));
+  so.maxIterations = static_cast<long>(o.number("qs_max_iterations", so.maxIterations, 1, 1e12));
+  so.maxBroken = static_cast<long>(o.number("qs_max_broken", so.maxBroken, 0, 1e12));
+  so.maxCutBacks = static_cast<int>(o.number("qs_max_cut_backs", so.maxCutBacks, 0, 50));
+  so.outDir = dir;
   o.checkAllUsed();  // before hours of trials
   const std::uint64_t search = strength::searchHash(scenarioHash(pb.source, pb.particles), o);
   const std::string journal = strength::journalPath(dir);
@@ -113,7 +123,12 @@ void strengthStudy(const Scenario& sc, const Params& o, Comm& comm, bool resume,
     std::printf("%s", line.c_str());
     std::fflush(stdout);
   };
-  const strength::Result st = strength::findStrength(c, lo, hi, comm, opt);
+  if (oneRun && comm.root())
+    std::printf("quasi-static: one run towards %.6g %s in %ld load steps\n", hi, ref.unit.c_str(),
+                so.loadSteps);
+  const strength::Result st = oneRun ? strength::staticStrength(c, hi, comm, so)
+                                     : strength::findStrength(c, lo, hi, comm, opt);
+  if (oneRun) opt.onTrial(st.trials[0]);
   if (!comm.root()) return;
 
   std::string report;  // the result; strength.txt has the trials above it
@@ -128,6 +143,8 @@ void strengthStudy(const Scenario& sc, const Params& o, Comm& comm, bool resume,
             "failing trial: {} (draw it: pdq post picture {} --restart "
             "{}/ParticleAlterAttrs.{}.rst)\n",
             t.dir, pb.source, t.dir, t.steps);
+  } else if (st.upper < 0 && oneRun) {
+    report += fmt::format("in equilibrium up to hi = {:.4g} {}: raise hi\n", st.lower, ref.unit);
   } else if (st.upper < 0) {
     report += fmt::format("no failure found up to {:.4g} {}: raise hi or max_trials\n",
                           st.trials.empty() ? hi : st.trials.back().load, ref.unit);
