@@ -78,7 +78,7 @@ struct DisplacementControl {
 // until the out-of-balance force is below `tolerance` × the applied load (or × the
 // reactions when no load is applied). A load step that does not converge, or breaks more
 // than `maxBroken` interactions (0: any number), is tried again with half the increment,
-// at most `maxCutBacks` times in a row; two load steps in a row taken at once double it
+// down to 2^-`maxCutBacks` of the largest; two load steps in a row taken at once double it
 // again (up to 1/`loadSteps`).
 struct Solver {
   bool quasiStatic = false;

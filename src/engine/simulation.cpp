@@ -276,7 +276,7 @@ bool Simulation::relaxLoadStep() {
   Integrator::Relaxed r;
   double factor = previous;
   long broken = brokenBefore;
-  for (int cuts = 0;; ++cuts) {
+  for (int cuts = 0;; ++cuts) {  // cuts: cut-backs of this load step
     const double increment = std::min(path.increment, full - path.progress);
     factor = staticFactor(path.progress + increment);
     ctx_->setStaticFactor(factor);
@@ -301,7 +301,8 @@ bool Simulation::relaxLoadStep() {
            << " of the applied load (tolerance " << solver.tolerance << ")";
     std::copy(positions.begin(), positions.end(), particles_.alter(0));
     bonds_.restore(bonds);
-    if (cuts < solver.maxCutBacks) {
+    // Increments never fall below 2^-max_cut_backs of the largest, so the run cannot creep.
+    if (increment > std::ldexp(1.0, -solver.maxCutBacks)) {
       path.increment = increment / 2, path.easy = 0;
       if (comm_.root()) ctx_->log() << what.str() << "; the increment halved\n";
       continue;
@@ -309,7 +310,7 @@ bool Simulation::relaxLoadStep() {
     // No equilibrium even with the smallest increment. Before any has been found and with
     // nothing broken, the input is at fault (too few iterations, or nothing holds the
     // structure); otherwise the run ends at its last equilibrium.
-    what << ", with the increment halved " << solver.maxCutBacks << " times";
+    what << ", even with the smallest increment (2^-" << solver.maxCutBacks << " of the largest)";
     if (path.progress == 0 && broken == brokenBefore)
       throw InputError(cfg_.source, solver.line,
                        what.str() +
