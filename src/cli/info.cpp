@@ -5,6 +5,7 @@
 #include "cli/summary.hpp"
 #include "io/standard_outputs.hpp"
 #include "scenario/scenario.hpp"
+#include "studies/reference.hpp"
 
 namespace pdq::cli {
 
@@ -23,8 +24,18 @@ void infoCommand(const InfoOptions& o) {
   const auto sim = makeSimulation(std::move(pb), comm);
   sim->setup();
   const std::string text = summary(*sim, modelName, o.input, o.ranks);
+  // The textbook strength the specimen's generator knows, beside the scenario's own
+  // reference (the examples give the thesis's strength there), as pdq strength reports them.
+  const Reference ref = referenceFor(sc, sc.modelParams);
+  const auto given = sc.strength.raw("reference");
   if (comm.root()) {
     std::printf("%s%s", text.c_str(), sets.c_str());
+    if (ref.value > 0)
+      std::printf("reference     %s: %.4g %s (%s)\n", ref.label.c_str(), ref.value,
+                  ref.unit.c_str(), ref.mode.c_str());
+    if (given)
+      std::printf("reference     [strength] reference: %s %s\n", given->text.c_str(),
+                  ref.unit.c_str());
     std::printf("output        %s\n", outDir.c_str());
   }
 }

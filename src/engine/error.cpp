@@ -10,7 +10,7 @@ static std::string where(const std::string& file, int line) {
 }
 
 InputError::InputError(const std::string& file, int line, const std::string& problem)
-    : Error(where(file, line) + ": " + problem), file_(file), line_(line) {}
+    : Error(where(file, line) + ": " + problem), file_(file), line_(line), problem_(problem) {}
 
 static std::size_t editDistance(std::string_view a, std::string_view b) {
   std::vector<std::size_t> row(b.size() + 1);

@@ -18,10 +18,12 @@ class InputError : public Error {
   InputError(const std::string& file, int line, const std::string& problem);
   const std::string& file() const { return file_; }
   int line() const { return line_; }
+  const std::string& problem() const { return problem_; }  // the message without the place
 
  private:
   std::string file_;
   int line_;
+  std::string problem_;
 };
 
 class RunError : public Error {

@@ -118,7 +118,14 @@ void Simulation::setup() {
   step_ = cfg_.firstStep;
   ctx_->setStep(step_);
   ctx_->setSteps(cfg_.steps);
-  model_->setup(*ctx_);
+  try {
+    model_->setup(*ctx_);
+  } catch (const InputError& e) {
+    // A model's set-up judges the particles: an error tied to no line of its own is one of
+    // the line that gave them.
+    if (e.line() > 0) throw;
+    throw InputError(cfg_.source, cfg_.particlesLine, e.problem());
+  }
   setupDt_ = ctx_->dt();
   resumed_ = restart_.has_value();
   if (restart_) {

@@ -37,6 +37,7 @@ struct RunConfig {
   Solver solver;                           // dynamic, or quasi-static: a step is a load step
   std::string outDir = ".";
   std::string source = "input";  // file named in configuration errors
+  int particlesLine = 0;         // its line that gives the particles (generator or files)
   // Check for instability (non-finite attributes or forces, a particle moving further
   // than the skin) every N steps (0: only at steps that save restart files).
   long checkEvery = 1;

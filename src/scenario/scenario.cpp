@@ -153,6 +153,7 @@ Generated readParticles(const toml::table& root, const std::string& file, Scenar
     }
     gp.checkAllUsed();
     sc.generator = name->text;
+    pb.run.particlesLine = name->line;
     sc.generatorParams = gp;
     if (g.particles.nFixed != schema.nFixed() || g.particles.nAlter != schema.nAlter())
       throw InputError(file, name->line,
@@ -176,6 +177,7 @@ Generated readParticles(const toml::table& root, const std::string& file, Scenar
     p.accept("set");
     p.checkAllUsed();
     g.particles = readParticleFiles(fixed, alter, schema);
+    pb.run.particlesLine = p.raw("fixed")->line;
   } else {
     p.accept("fixed");
     p.accept("alter");

@@ -77,4 +77,8 @@ Capacity simplySupportedUniform(const Section& s, double span, bool atCriticalSe
           uniformLoadFromShear(shearStrength(s), span, s.d, atCriticalSection)};
 }
 
+Capacity cantileverTip(const Section& s, double length) {
+  return {flexuralStrength(s) / length, shearStrength(s)};
+}
+
 }  // namespace pdq::aci318

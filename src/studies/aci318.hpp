@@ -2,8 +2,9 @@
 // ACI 318-11 strengths of a rectangular reinforced concrete section, as the thesis compares
 // its MPLM results with (§4.4): flexure by the equivalent rectangular stress block, shear
 // as V_c + V_s, both nominal (no strength-reduction factor φ), converted into a line load on
-// a simply supported span. SI units throughout: m, m², Pa, N, N·m. The materials come from
-// the scenario (studies/mplm_reference.hpp), so nothing here has a default strength.
+// a simply supported span or a cantilever's tip load. SI units throughout: m, m², Pa, N, N·m. The
+// materials come from the scenario (studies/mplm_reference.hpp), so nothing here has a default
+// strength.
 #include <string>
 
 namespace pdq::aci318 {
@@ -44,5 +45,8 @@ struct Capacity {
   std::string mode() const { return flexure < shear ? "flexural" : "shear"; }
 };
 Capacity simplySupportedUniform(const Section& s, double span, bool atCriticalSection = true);
+// A cantilever of length L under a tip load P (N): from moment, P = M/L (M at the support);
+// from shear, P = V (the shear is P all along).
+Capacity cantileverTip(const Section& s, double length);
 
 }  // namespace pdq::aci318

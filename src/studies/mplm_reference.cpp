@@ -11,7 +11,7 @@ Parameters parameters(const Params& model) {
   return par;
 }
 
-double barArea(double diameter) { return prep::Bar{0, 0, 0, 0, diameter}.area(); }
+double barArea(double diameter) { return prep::BarSection{diameter}.area(); }
 
 }  // namespace
 
@@ -70,6 +70,62 @@ Reference beamReference(const Params& generator, const Params& model) {
   } else {
     const double Mcr = aci318::crackingMoment(strengths(par).ft, b.thickness, b.depth);
     r.value = aci318::uniformLoadFromMoment(Mcr, b.span) / 1e3;
+    r.label = "classical";
+    r.mode = "cracking";
+  }
+  return r;
+}
+
+std::optional<aci318::Section> section(const mplm3d::BeamSpec& b, const Parameters& par) {
+  // Downward loads put the top in tension on a cantilever, the bottom on a simple span.
+  const bool topInTension = (b.supports == "clamped") == (b.load > 0);
+  double area = 0, moment = 0;
+  for (const mplm3d::BarSpec& bar : b.bars)
+    if ((bar.y > b.depth / 2) == topInTension) {
+      area += bar.section.area();
+      moment += bar.section.area() * bar.y;
+    }
+  if (!(area > 0)) return std::nullopt;
+  const Strengths m = strengths(par);
+  aci318::Section sec;
+  sec.b = b.width;
+  sec.h = b.depth;
+  sec.d = topInTension ? moment / area : b.depth - moment / area;
+  sec.As = area;
+  sec.fc = m.fc;
+  sec.fy = sec.fyt = m.fy;
+  sec.Es = m.Es;
+  if (b.stirrups) {
+    sec.Av = 2 * b.stirrups->section.area();
+    sec.sv = b.stirrups->spacing;
+  }
+  return sec;
+}
+
+Reference memberReference(const Params& generator, const Params& model) {
+  const mplm3d::BeamSpec b = mplm3d::beamSpec(generator, model);
+  Reference r;
+  const bool tip = b.loading == "tip" && b.supports == "clamped";
+  const bool top = b.loading == "top" && (b.supports == "simple" || b.supports == "bearings");
+  if (b.loading == "tip") {
+    r.unit = "N";
+    r.unitLoad = b.load;
+  } else if (b.loading == "top") {
+    r.unit = "kN/m";
+    r.unitLoad = b.load / 1e3;
+  }
+  if (!tip && !top) return r;
+  const Parameters par = parameters(model);
+  const double scale = tip ? 1.0 : 1e-3;
+  if (const auto sec = section(b, par)) {
+    const aci318::Capacity c = tip ? aci318::cantileverTip(*sec, b.length)
+                                   : aci318::simplySupportedUniform(*sec, b.length);
+    r.value = c.governing() * scale;
+    r.label = "ACI 318";
+    r.mode = c.mode();
+  } else {
+    const double Mcr = aci318::crackingMoment(strengths(par).ft, b.width, b.depth);
+    r.value = (tip ? Mcr / b.length : aci318::uniformLoadFromMoment(Mcr, b.length)) * scale;
     r.label = "classical";
     r.mode = "cracking";
   }

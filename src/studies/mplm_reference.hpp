@@ -4,9 +4,12 @@
 // (thesis Table 4.1 and §4.3.2; docs/mplm.md): f_t = E ε_t (youngs_modulus ×
 // tensile_strain) and f'c = 10 f_t; the steel's f_y = E_s ε_y (steel_modulus ×
 // steel_yield_strain).
+#include <optional>
+
 #include "engine/params.hpp"
 #include "models/mplm/common/parameters.hpp"
 #include "prep/mplm/generators.hpp"
+#include "prep/mplm/generators3d.hpp"
 #include "studies/aci318.hpp"
 #include "studies/reference.hpp"
 
@@ -27,5 +30,16 @@ aci318::Section section(const BeamSpec& b, const Parameters& par);
 // load at which the bending stress reaches f_t; none with supports = "none".
 Reference plateReference(const Params& generator, const Params& model);
 Reference beamReference(const Params& generator, const Params& model);
+
+// 3D members (mplm3d_beam): b = width, h = depth; the tension steel is the bars on the
+// tension side of mid-depth (the top of a cantilever under a downward tip load, the bottom
+// of a simply supported beam under a downward load), d from the compression face to their
+// centroid; a hoop gives two legs of its bar per spacing. None without tension steel.
+std::optional<aci318::Section> section(const mplm3d::BeamSpec& b, const Parameters& par);
+// A cantilever under a tip load (N): ACI 318's P = M_n/L or V_n, whichever is lower (L the
+// member's length, as the thesis takes it), or for a plain one M_cr/L. A simply supported
+// member under the top load (kN/m): as beamReference, with L the member's length. None
+// for other supports and loads.
+Reference memberReference(const Params& generator, const Params& model);
 
 }  // namespace pdq::mplm

@@ -48,8 +48,7 @@ const std::vector<Case> cases = {
      "lattice.toml:5: unknown model 'sprung' (did you mean 'spring'?)"},
     {"unknown parameter", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dT = 0.05"); },
      "lattice.toml:7: unknown parameter 'dT' for model 'spring' ([model]) (did you mean 'dt'?)"},
-    {"parameter out of range",
-     [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = -0.05"); },
+    {"parameter out of range", [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = -0.05"); },
      "lattice.toml:7: parameter 'dt'"},
     {"parameter not a number",
      [](auto d) { edit(d + "/lattice.toml", "dt = 0.05", "dt = \"fast\""); },
@@ -117,10 +116,9 @@ TEST(CliBadInput, ThesisFilesNameFileAndLine) {
     writeFile(dir + "/dat/pdQInput.dat", readFile(dir + "/dat/pdQInput.dat") + l + "\n");
   };
   auto ids = [&](const std::string& v) {
-    return DatCase{
-        "history_ids",
-        [&, v] { edit(dir + "/dat/pdQInput.dat", "history_ids 0", "history_ids " + v); },
-        "pdQInput.dat:" + idsLine + ": history_ids: " + v + " is not a particle's ID"};
+    return DatCase{"history_ids",
+                   [&, v] { edit(dir + "/dat/pdQInput.dat", "history_ids 0", "history_ids " + v); },
+                   "pdQInput.dat:" + idsLine + ": history_ids: " + v + " is not a particle's ID"};
   };
   std::vector<DatCase> datCases = {
       {"unknown parameter", [&] { edit(dir + "/dat/pdQUserInput.dat", "dt ", "dT "); },
@@ -284,8 +282,7 @@ span = 1.0
        "pb.toml:10: nx = 10000000000 exceeds the largest count along an axis, 2147483647"},
       {"more than the memory given", pmb, "nx = 20\nny = 10", "nx = 1000\nny = 1000",
        "this machine has 1 MB available", "1M"},
-      {"a 1e9 m beam", beam, "span = 1.0", "span = 1e9",
-       "pb.toml:5: generator 'mplm_beam': "},
+      {"a 1e9 m beam", beam, "span = 1.0", "span = 1e9", "pb.toml:5: generator 'mplm_beam': "},
       {"a plate of no height", plate, "height = 0.12", "height = 0.0",
        "pb.toml:7: height = 0 m is less than the lattice's stride"},
   };
@@ -328,4 +325,62 @@ TEST(CliBadInput, PicturesNameTheirFileLineAndTrueCause) {
   r = runPdq({"run", sc}, dir);
   EXPECT_EQ(r.code, 1) << r.all();
   EXPECT_THAT(r.err, HasSubstr("lattice.toml:" + line + ": no bond attribute 'nothing'"));
+}
+
+// 3D members (mplm3d, the mplm3d_beam generator): each bad value stops with the file, the
+// line and the reason, exit 1, and nothing written.
+TEST(CliBadInput, Member3dNamesFileAndLineAndWritesNothing) {
+  const std::string particles = R"(generator = "mplm3d_beam"
+length = 0.3
+depth = 0.2
+width = 0.12
+bar_size = "#13"
+bar_cover = 0.03
+stirrup_size = "#10"
+stirrup_spacing = 0.1
+stirrup_cover = 0.02
+)";
+  const std::string head = "steps = 5\n[model]\nname = \"mplm3d\"\n[particles]\n";
+  const std::string scenario = head + particles + "[output]\ndir = \"out\"\n";
+  struct MemberCase {
+    const char* name;
+    std::string from, to, expected;
+  };
+  const std::vector<MemberCase> memberCases = {
+      {"lattice that does not fit the box", "width = 0.12", "width = 0.01",
+       "m3.toml:8: the lattice does not fit the box"},
+      {"bar outside the section", "bar_cover = 0.03", "bar_y = [0.3]\nbar_z = [0.06]",
+       "m3.toml:10: bar 1 (centroid y = 0.3 m, z = 0.06 m, diameter 0.0127 m) lies outside"},
+      {"stirrup spacing below s", "stirrup_spacing = 0.1", "stirrup_spacing = 0.015",
+       "m3.toml:12: stirrup_spacing 0.015 m is below the lattice spacing"},
+      {"bar cover over half the section", "bar_cover = 0.03", "bar_cover = 0.07",
+       "m3.toml:10: bar_cover 0.07 m is larger than half the section"},
+      {"stirrup cover over half the section", "stirrup_cover = 0.02", "stirrup_cover = 0.06",
+       "m3.toml:13: stirrup_cover 0.06 m is larger than half the section"},
+      {"2D particle set for the 3D model", particles,
+       "generator = \"square\"\nnx = 5\nny = 5\nspacing = 0.02\n",
+       "m3.toml:5: mplm3d needs a 3D problem"},
+      {"2D generator for the 3D model", particles, "generator = \"mplm_beam\"\n",
+       "m3.toml:5: this generator makes MPLM particles; use it with model mplm2d"},
+      {"3D particle set for the 2D model", "\"mplm3d\"", "\"mplm2d\"",
+       "m3.toml:5: mplm3d_beam makes 3D MPLM particles; use it with model mplm3d"},
+  };
+  {
+    // The member as written runs.
+    const std::string dir = freshDir("bad_input_3d");
+    writeFile(dir + "/m3.toml", scenario);
+    const auto r = runPdq({"run", "m3.toml", "-q"}, dir);
+    ASSERT_EQ(r.code, 0) << r.all();
+  }
+  for (const auto& c : memberCases) {
+    SCOPED_TRACE(c.name);
+    const std::string dir = freshDir("bad_input_3d");
+    writeFile(dir + "/m3.toml", scenario);
+    edit(dir + "/m3.toml", c.from, c.to);
+    const auto before = filesUnder(dir);
+    const auto r = runPdq({"run", "m3.toml"}, dir);
+    EXPECT_EQ(r.code, 1) << r.all();
+    EXPECT_THAT(r.err, HasSubstr(c.expected));
+    EXPECT_EQ(filesUnder(dir), before) << "files were written";
+  }
 }

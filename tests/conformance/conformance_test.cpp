@@ -124,6 +124,25 @@ density = 176776.69529663686
     // rotations fails.
     all["mplm3d"].push_back(
         problem("[model]\nname = \"mplm3d\"\ndamage = false\n" + fcc, 2e-4, 0.2));
+    // Reinforced: two bars and closed hoops linked to the concrete, co-rotational, damaging.
+    all["mplm3d"].push_back(problem(R"([model]
+name = "mplm3d"
+spacing = 0.02
+dt = 1.0e-6
+[particles]
+generator = "mplm3d_beam"
+length = 0.14
+depth = 0.12
+width = 0.1
+supports = "none"
+loading = "none"
+bar_diameter = 0.012
+bar_cover = 0.015
+stirrup_diameter = 0.008
+stirrup_spacing = 0.06
+stirrup_cover = 0.01
+)",
+                                    2e-5, 2e-4));
     return all;
   }();
   return problems;

@@ -48,10 +48,10 @@ TEST(Rebar, BarsAndStirrups) {
   const auto pts = prep::barPoints(bar, s);
   EXPECT_EQ(pts.size(), 59u);
   EXPECT_NEAR(pts[1][0] - pts[0][0], s, 1e-12);
-  EXPECT_NEAR(bar.area(), 1.26677e-4, 1e-9);
+  EXPECT_NEAR(bar.section.area(), 1.26677e-4, 1e-9);
   const auto st = prep::stirrups(0.04, 0.15, 1.16 - 0.04 + 0.075, 0.02, 0.24, 0.01);
   ASSERT_EQ(st.size(), 8u);
-  EXPECT_NEAR(st.back().x0, 1.09, 1e-12);
+  EXPECT_NEAR(st.back().from[0], 1.09, 1e-12);
   // A 0.22 m stirrup at spacing ≤ s: 11 segments of exactly 0.02 m.
   EXPECT_EQ(prep::barPoints(st[0], s).size(), 12u);
 }

@@ -23,17 +23,22 @@ void addConcrete(ParticleSet& ps, const std::vector<std::array<double, 2>>& poin
   for (const auto& p : points) ps.add(static_cast<Gid>(ps.size()), p[0], p[1], 0.0);
 }
 
-void addBar(ParticleSet& ps, const prep::Bar& bar, double s, int barId) {
-  const auto pts = prep::barPoints(bar, s);
-  for (std::size_t k = 0; k < pts.size(); ++k) {
-    const std::size_t i = ps.add(static_cast<Gid>(ps.size()), pts[k][0], pts[k][1], 0.0);
+void addSteel(ParticleSet& ps, const std::vector<prep::Point>& points,
+              const prep::BarSection& section, int barId) {
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const std::size_t i =
+        ps.add(static_cast<Gid>(ps.size()), points[k][0], points[k][1], points[k][2]);
     double* f = ps.fixedRow(i);
     f[MATERIAL] = STEEL;
     f[BAR] = barId;
     f[LINK] = k % 2 == 0 ? 1.0 : 0.0;
-    f[AREA] = bar.area();
-    f[SECOND_MOMENT] = bar.secondMoment();
+    f[AREA] = section.area();
+    f[SECOND_MOMENT] = section.secondMoment();
   }
+}
+
+void addBar(ParticleSet& ps, const prep::Bar& bar, double s, int barId) {
+  addSteel(ps, prep::barPoints(bar, s), bar.section, barId);
 }
 
 std::vector<std::size_t> select(const ParticleSet& ps,

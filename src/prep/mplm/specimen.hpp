@@ -15,7 +15,12 @@ ParticleSet newParticleSet();
 
 // Appends concrete particles at the points (global IDs continue from the set's size).
 void addConcrete(ParticleSet& ps, const std::vector<std::array<double, 2>>& points);
-// Appends a bar's steel particles; every other one (the first included) links to concrete.
+// Appends steel particles of bar `barId` at the points, of the bar's section, in the
+// widths of either dimension's set (the steel columns are shared); every other one (the
+// first included) links to concrete.
+void addSteel(ParticleSet& ps, const std::vector<prep::Point>& points,
+              const prep::BarSection& section, int barId);
+// A straight bar's steel particles (prep::barPoints).
 void addBar(ParticleSet& ps, const prep::Bar& bar, double s, int barId);
 
 // Indices of the particles whose fixed row satisfies `pick`.
