@@ -414,16 +414,6 @@ TEST(Checkpoint, AReusedFolderKeepsNothingStale) {
   EXPECT_TRUE(fs::exists(out + "/" + checkpointName(30)));
 }
 
-namespace {
-
-// Runs a shell command in `dir`; its exit code.
-int shell(const std::string& dir, const std::string& command) {
-  const int status = std::system(("cd '" + dir + "' && " + command).c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-}  // namespace
-
 TEST(Checkpoint, BatchScriptsResumeAndSubmitThemselvesAgain) {
   // tools/pdq.slurm and tools/pdq.pbs with stand-ins for the batch system's commands that
   // run pdq here and record what would be submitted.
@@ -448,7 +438,7 @@ TEST(Checkpoint, BatchScriptsResumeAndSubmitThemselvesAgain) {
   const std::string slurm = env + "SLURM_NTASKS=1 SLURM_JOB_ID=7 bash '" + sourceDir() +
                             "/tools/pdq.slurm' lattice.toml --max-wall-time 3s";
   // The first job starts the run, stops before its time is up and submits the next.
-  EXPECT_EQ(shell(dir, slurm + " > first.log 2>&1"), 0) << readFile(dir + "/first.log");
+  EXPECT_EQ(runShell(dir, slurm + " > first.log 2>&1"), 0) << readFile(dir + "/first.log");
   EXPECT_THAT(readFile(dir + "/first.log"), HasSubstr("stopped at step"));
   EXPECT_EQ(readFile(dir + "/submitted.txt"),
             "sbatch --export=ALL,PDQ_OUT=out,PDQ_SUBMISSION=2 /cluster/jobs/pdq.slurm "
@@ -456,7 +446,7 @@ TEST(Checkpoint, BatchScriptsResumeAndSubmitThemselvesAgain) {
   const long first = newestCheckpoint(dir + "/out");
   EXPECT_GT(first, 0);
   // The next resumes from the checkpoint, and with the last submission allowed stops there.
-  EXPECT_EQ(shell(dir, "PDQ_SUBMISSION=2 PDQ_MAX_SUBMISSIONS=2 " + slurm + " > second.log 2>&1"),
+  EXPECT_EQ(runShell(dir, "PDQ_SUBMISSION=2 PDQ_MAX_SUBMISSIONS=2 " + slurm + " > second.log 2>&1"),
             4);
   EXPECT_THAT(readFile(dir + "/second.log"),
               HasSubstr("resuming from out/" + checkpointName(first)));
@@ -464,10 +454,10 @@ TEST(Checkpoint, BatchScriptsResumeAndSubmitThemselvesAgain) {
   const long second = newestCheckpoint(dir + "/out");
   // PBS: the same through --max-wall-time, submitting itself with qsub.
   fs::remove(dir + "/submitted.txt");
-  EXPECT_EQ(shell(dir, env +
-                           "SCENARIO=lattice.toml PBS_NODEFILE=nodes PBS_O_WORKDIR=. "
-                           "PDQ_SUBMISSION=3 PDQ_WALL_TIME=3s PDQ_SCRIPT=/jobs/pdq.pbs bash '" +
-                           sourceDir() + "/tools/pdq.pbs' > third.log 2>&1"),
+  EXPECT_EQ(runShell(dir, env +
+                              "SCENARIO=lattice.toml PBS_NODEFILE=nodes PBS_O_WORKDIR=. "
+                              "PDQ_SUBMISSION=3 PDQ_WALL_TIME=3s PDQ_SCRIPT=/jobs/pdq.pbs bash '" +
+                              sourceDir() + "/tools/pdq.pbs' > third.log 2>&1"),
             0)
       << readFile(dir + "/third.log");
   EXPECT_THAT(readFile(dir + "/third.log"),

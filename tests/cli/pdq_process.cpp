@@ -42,6 +42,19 @@ std::vector<std::string> cleanEnvironment() {
   return env;
 }
 
+// `/bin/sh -c cmd` with stdin /dev/null, in the clean environment: a child that inherited
+// this test's MPI job variables would take itself for one of its ranks and abort in MPI_Init.
+pid_t spawnShell(std::string cmd, const posix_spawn_file_actions_t& actions) {
+  std::vector<std::string> env = cleanEnvironment();
+  std::vector<char*> envp;
+  for (auto& e : env) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  std::string sh = "/bin/sh", dashC = "-c";
+  char* argv[] = {sh.data(), dashC.data(), cmd.data(), nullptr};
+  pid_t pid = 0;
+  return posix_spawn(&pid, "/bin/sh", &actions, nullptr, argv, envp.data()) == 0 ? pid : -1;
+}
+
 }  // namespace
 
 std::string sourceDir() {
@@ -76,16 +89,20 @@ Started startPdq(const std::vector<std::string>& args, const std::string& cwd, i
   posix_spawn_file_actions_addopen(&actions, 2, s.errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
                                    0644);
   posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  std::vector<std::string> env = cleanEnvironment();
-  std::vector<char*> envp;
-  for (auto& e : env) envp.push_back(e.data());
-  envp.push_back(nullptr);
-  std::string sh = "/bin/sh", dashC = "-c";
-  char* argv[] = {sh.data(), dashC.data(), cmd.data(), nullptr};
-  pid_t pid = 0;
-  if (posix_spawn(&pid, "/bin/sh", &actions, nullptr, argv, envp.data()) == 0) s.pid = pid;
+  s.pid = spawnShell(cmd, actions);
   posix_spawn_file_actions_destroy(&actions);
   return s;
+}
+
+int runShell(const std::string& dir, const std::string& command) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
+  const pid_t pid = spawnShell("cd " + quote(dir) + " && " + command, actions);
+  posix_spawn_file_actions_destroy(&actions);
+  int status = 0;
+  if (pid <= 0 || waitpid(pid, &status, 0) != pid) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 Run waitPdq(const Started& s) {

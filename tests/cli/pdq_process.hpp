@@ -24,6 +24,9 @@ struct Started {
 };
 Started startPdq(const std::vector<std::string>& args, const std::string& cwd = "", int ranks = 0);
 Run waitPdq(const Started& started);  // waits for it to end
+// `sh -c command` in `dir`, without this test's MPI job in its environment; its exit code
+// (-1: it did not exit).
+int runShell(const std::string& dir, const std::string& command);
 
 // A new empty folder for one test.
 std::string freshDir(const std::string& name);
