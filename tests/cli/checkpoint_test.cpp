@@ -333,12 +333,6 @@ int journalTrials(const std::string& path) {
   return n;
 }
 
-int count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 }  // namespace
 
 TEST(Checkpoint, StrengthSearchKilledBetweenTrialsResumesWithoutRerunningThem) {
@@ -371,9 +365,9 @@ TEST(Checkpoint, StrengthSearchKilledBetweenTrialsResumesWithoutRerunningThem) {
   again.insert(again.end(), {"--resume", "tension_x_out"});
   const auto resumed = runPdq(again, dir);
   ASSERT_EQ(resumed.code, 0) << resumed.all();
-  EXPECT_EQ(count(resumed.out, "(done before: from journal.txt)"), done) << resumed.out;
+  EXPECT_EQ(occurrences(resumed.out, "(done before: from journal.txt)"), done) << resumed.out;
   EXPECT_EQ(journalTrials(out + "/journal.txt"), 3);
-  EXPECT_EQ(count(readFile(out + "/trials.csv"), "\n"), 4);  // header and three trials
+  EXPECT_EQ(occurrences(readFile(out + "/trials.csv"), "\n"), 4);  // header and three trials
   EXPECT_TRUE(fs::exists(out + "/trial_03/history.csv"));
   // The finished trial was not run again: its outputs are untouched.
   EXPECT_EQ(fs::last_write_time(out + "/trial_01/history.csv"), firstRun);

@@ -189,4 +189,10 @@ bool waitFor(const std::function<bool()>& ready, double seconds) {
   return false;
 }
 
+int occurrences(const std::string& text, const std::string& what) {
+  int n = 0;
+  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+  return n;
+}
+
 }  // namespace pdq::test

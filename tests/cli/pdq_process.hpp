@@ -41,6 +41,8 @@ void edit(const std::string& path, const std::string& from, const std::string& t
 // Steps of the rows of a history file's text (the number before the first ',' or ' ').
 std::vector<long> rowSteps(const std::string& text);
 long lastRowStep(const std::string& path);  // -1: no rows
+// How often `what` occurs in `text` (overlapping occurrences counted).
+int occurrences(const std::string& text, const std::string& what);
 // The process ids of a process's children (the ranks under mpirun).
 std::vector<int> children(int pid);
 // Polls `ready` until it is true (true) or `seconds` have passed (false).

@@ -323,12 +323,6 @@ int rankOf(int pid) {
   return -1;
 }
 
-int count(const std::string& text, const std::string& what) {
-  int n = 0;
-  for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-  return n;
-}
-
 }  // namespace
 
 TEST(Reliability, StoppedRankOfFourEndsTheJobNamingIt) {
@@ -362,7 +356,7 @@ TEST(Reliability, FileErrorOnOneRankEndsTheJobAtOnceWithItsReason) {
   EXPECT_EQ(r.code, 3) << r.all();
   EXPECT_THAT(r.err, HasSubstr("rank 0: cannot rename"));
   EXPECT_THAT(r.err, HasSubstr("ParticleAlterAttrs.20.rst: Is a directory"));
-  EXPECT_EQ(count(r.err, "pdq: error:"), 1) << r.err;
+  EXPECT_EQ(occurrences(r.err, "pdq: error:"), 1) << r.err;
 }
 
 TEST(Reliability, OutputFolderUnderAFileIsReportedOnceWithTheCause) {
@@ -374,6 +368,6 @@ TEST(Reliability, OutputFolderUnderAFileIsReportedOnceWithTheCause) {
   EXPECT_EQ(r.code, 3) << r.all();
   EXPECT_THAT(r.err, HasSubstr("pdq: error: cannot create the folder plain/out: plain is a file, "
                                "not a folder"));
-  EXPECT_EQ(count(r.err, "pdq: error:"), 1) << r.err;
+  EXPECT_EQ(occurrences(r.err, "pdq: error:"), 1) << r.err;
   EXPECT_THAT(r.err, Not(HasSubstr("filesystem error")));
 }
