@@ -35,12 +35,7 @@ for e in "${examples[@]}"; do
   restart=$(field "failing trial" | sed -nE 's/.*--restart ([^ )]+)\)$/\1/p')
   if [ -n "$restart" ]; then
     load=$(field strength | sed -E 's/^[^ ]+ to ([^ ]+ [^ ]+) .*/\1/')
-    # 3D members: the side elevation of the middle of the width, tensile damage (the
-    # interactions' omega_t), displacements magnified as in the thesis's figures
-    view=()
-    grep -q '^name = "mplm3d"' "$sc" &&
-      view=(--view z --slab z=0.05:0.11 --magnification 10 --set bond_damage=omega_t)
-    "$build/pdq" post picture "$sc" --restart "$restart" -o "$src/docs/mplm/$e.png" "${view[@]}" \
+    "$build/pdq" post picture "$sc" --restart "$restart" -o "$src/docs/mplm/$e.png" \
       --set "title=$e: damage in the lowest failing trial, $load" >>"$e.log" 2>&1 ||
       echo "(picture of $e failed: see $work/$e.log)"
   fi
