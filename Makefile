@@ -36,6 +36,7 @@ bench: deps-test build
 
 validate: build
 	bash bench/mplm/validate.sh $(BUILD)
+	bash bench/lab/run.sh $(BUILD)
 
 pictures: build
 	bash docs/pictures.sh $(BUILD)

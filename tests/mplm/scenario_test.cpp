@@ -1,5 +1,6 @@
 // MPLM scenarios: a scenario whose lattice spacing disagrees with the model's is refused;
-// supports, bearings and displacement control set by [[particles.set]] act as they should.
+// supports, bearings and displacement control set by [[particles.set]] act as they should;
+// mplm_beam's laboratory specimens (overhangs, a notch) are where the keys put them.
 #include "scenario/scenario.hpp"
 
 #include <fmt/format.h>
@@ -9,11 +10,14 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <tuple>
+#include <vector>
 
 #include "engine/error.hpp"
 #include "engine/simulation.hpp"
 #include "io/standard_outputs.hpp"
 #include "models/mplm/2d/attributes.hpp"
+#include "prep/hexagonal.hpp"
 #include "support/harness.hpp"
 
 namespace pdq::mplm {
@@ -134,6 +138,79 @@ TEST(MplmScenarios, BearingsPushButNeverPull) {
     } else {
       EXPECT_GT(test::global(sim, "uy"), 0.0);  // lifted off
       EXPECT_EQ(test::global(sim, "reaction_y"), 0.0);
+    }
+  }
+}
+
+// mplm_beam with overhangs and a notch: a 0.2 m span with 0.04 m beyond each support and a
+// slot 0.05 m deep, 0.03 m wide at midspan. The lattice covers the span and the overhangs;
+// no concrete particle lies in the slot and every other point of the rectangle is there;
+// the supports are the bottom particles within support_width/2 of x = 0.04 and 0.24; the
+// monitored particles are the bottom ones nearest midspan, one each side of the slot. A
+// notch narrower than the spacing, or an overhang that is not a whole number of spacings,
+// is refused at the generator's line.
+TEST(MplmScenarios, BeamWithOverhangsAndNotch) {
+  const double s = 0.02, span = 0.2, over = 0.04, depth = 0.12, length = span + 2 * over;
+  const double notchDepth = 0.05, notchWidth = 0.03, mid = length / 2, tol = 1e-9;
+  const std::string text = fmt::format(R"(steps = 1
+[model]
+name = "mplm2d"
+[particles]
+generator = "mplm_beam"
+span = {}
+overhang = {}
+depth = {}
+notch_depth = {}
+notch_width = {}
+support_width = 0.04
+line_load = 0
+)",
+                                       span, over, depth, notchDepth, notchWidth);
+  Scenario sc = scenarioFrom("mplm_lab_beam/notched.toml", text);
+  const ParticleSet& ps = sc.problem.particles;
+  std::size_t inSlot = 0, lattice = 0;
+  for (const auto& p :
+       prep::hexagonalRectangle(length, depth, s, prep::HexOrientation::BondsAlongX)) {
+    const bool slot = p[1] < notchDepth && std::fabs(p[0] - mid) <= notchWidth / 2 + tol;
+    inSlot += slot;
+    lattice += !slot;
+  }
+  ASSERT_GT(inSlot, 3u);
+  EXPECT_EQ(ps.size(), lattice);
+  double xMax = 0;
+  std::vector<double> pinned, roller, monitored;
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    const double* f = ps.fixedRow(k);
+    xMax = std::max(xMax, f[0]);
+    EXPECT_FALSE(f[1] < notchDepth && std::fabs(f[0] - mid) <= notchWidth / 2 + tol)
+        << "a particle in the notch at " << f[0] << ", " << f[1];
+    const int c = static_cast<int>(f[CONSTRAINT]);
+    if (c == (FIX_X | FIX_Y)) pinned.push_back(f[0]);
+    if (c == FIX_Y) roller.push_back(f[0]);
+    if (c != 0) {
+      EXPECT_LT(f[1], tol) << "a support off the bottom face";
+    }
+    if (f[MONITOR] != 0) monitored.push_back(f[0]);
+  }
+  EXPECT_NEAR(xMax, length, tol);
+  EXPECT_EQ(pinned, (std::vector<double>{over - s, over, over + s}));
+  ASSERT_EQ(roller.size(), 3u);
+  EXPECT_NEAR(roller[1], length - over, tol);
+  ASSERT_EQ(monitored.size(), 2u);
+  EXPECT_NEAR(monitored[0], mid - s, tol);  // the slot is mid ± 0.015
+  EXPECT_NEAR(monitored[1], mid + s, tol);
+
+  for (const auto& [from, to, expected] :
+       {std::tuple{"notch_width = 0.03", "notch_width = 0.01", "is less than the spacing"},
+        std::tuple{"overhang = 0.04", "overhang = 0.03", "the overhang, 0.0299"}}) {
+    std::string bad = text;
+    bad.replace(bad.find(from), std::string(from).size(), to);
+    try {
+      scenarioFrom("mplm_lab_beam/bad.toml", bad);
+      ADD_FAILURE() << to << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("bad.toml:5:"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
     }
   }
 }

@@ -1,9 +1,13 @@
 #include "prep/mplm/generators.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
-#include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 #include "engine/error.hpp"
 #include "models/mplm/2d/attributes.hpp"
@@ -38,42 +42,55 @@ ParticleSet plate(const PlateSpec& spec) {
 }
 
 ParticleSet beam(const BeamSpec& b) {
-  const double s = b.spacing;
+  const double s = b.spacing, tol = 1e-6 * s;
+  const double length = b.span + 2 * b.overhang, mid = length / 2;
+  if (b.notchDepth > 0 && b.notchWidth < s - tol)
+    throw std::invalid_argument("the notch width " + numberText(b.notchWidth) +
+                                " is less than the spacing " + numberText(s) +
+                                ": interactions would cross the notch");
+  auto inNotch = [&](double x, double y) {
+    return y < b.notchDepth - tol && std::fabs(x - mid) <= b.notchWidth / 2 + tol;
+  };
+  std::vector<std::array<double, 2>> points;
+  for (const auto& p :
+       prep::hexagonalRectangle(length, b.depth, s, prep::HexOrientation::BondsAlongX))
+    if (!inNotch(p[0], p[1])) points.push_back(p);
   ParticleSet ps = newParticleSet();
-  addConcrete(ps, prep::hexagonalRectangle(b.span, b.depth, s, prep::HexOrientation::BondsAlongX));
+  addConcrete(ps, points);
   int barId = 1;
   if (b.barDiameter > 0)
-    addBar(ps, prep::longitudinalBar(0, b.span, 0, b.barCentroid, b.barDiameter), s, barId++);
+    addBar(ps, prep::longitudinalBar(0, length, 0, b.barCentroid, b.barDiameter), s, barId++);
   if (b.stirrupDiameter > 0)
     for (const auto& st : prep::stirrups(
-             b.stirrupFirst, b.stirrupSpacing, b.span - b.stirrupFirst + b.stirrupSpacing / 2,
+             b.stirrupFirst, b.stirrupSpacing, length - b.stirrupFirst + b.stirrupSpacing / 2,
              b.barCentroid, b.depth - b.stirrupCover, b.stirrupDiameter))
       addBar(ps, st, s, barId++);
-  const double tol = 1e-6 * s;
   const double yTop = maxCoord(ps, 1);
   auto concreteAt = [&](double x, double y) {
     return select(ps, [=](const double* f) {
       return isConcrete(f) && std::fabs(f[0] - x) < tol && std::fabs(f[1] - y) < tol;
     });
   };
-  if (concreteAt(0, 0).size() != 1 || concreteAt(b.span, 0).size() != 1) {
-    char why[160];
-    std::snprintf(why, sizeof why,
-                  "the span %.17g is not a whole number of spacings: no lattice particle at the "
-                  "bottom-right corner to support",
-                  b.span);
-    throw std::invalid_argument(why);
-  }
+  for (const auto& [what, x] :
+       {std::pair{"the span plus the overhangs", length}, std::pair{"the overhang", b.overhang}})
+    if (concreteAt(x, 0).size() != 1)
+      throw std::invalid_argument(std::string(what) + ", " + numberText(x) +
+                                  ", is not a whole number of spacings: no lattice particle "
+                                  "on the bottom face at the support");
   if (b.supports != "none") {
+    // Without an overhang the supports reach in from the ends; with one, they are centred
+    // on the support lines.
+    const double reach = b.overhang > 0 ? b.supportWidth / 2 : b.supportWidth;
+    const double lo = b.overhang > 0 ? b.overhang : 0, hi = length - lo;
     const auto left = select(ps, [&](const double* f) {
-      return isConcrete(f) && f[1] < tol && f[0] <= b.supportWidth + tol;
+      return isConcrete(f) && f[1] < tol && std::fabs(f[0] - lo) <= reach + tol;
     });
     const auto right = select(ps, [&](const double* f) {
-      return isConcrete(f) && f[1] < tol && f[0] >= b.span - b.supportWidth - tol;
+      return isConcrete(f) && f[1] < tol && std::fabs(f[0] - hi) <= reach + tol;
     });
     if (b.supports == "bearings") {
       constrain(ps, left, REST_Y);
-      constrain(ps, concreteAt(0, 0), FIX_X);
+      constrain(ps, concreteAt(lo, 0), FIX_X);
       constrain(ps, right, REST_Y);
     } else {
       constrain(ps, left, FIX_X | FIX_Y);
@@ -81,11 +98,16 @@ ParticleSet beam(const BeamSpec& b) {
     }
   }
   const auto top = select(ps, [&](const double* f) { return isConcrete(f) && f[1] > yTop - tol; });
-  if (b.lineLoad != 0) loadUniform(ps, top, 0, 0, b.span, 0, -b.lineLoad * b.span);
-  const auto mid = select(ps, [&](const double* f) {
-    return isConcrete(f) && f[1] < tol && std::fabs(f[0] - b.span / 2) <= s / 2 + tol;
-  });
-  monitor(ps, mid);
+  if (b.lineLoad != 0) loadUniform(ps, top, 0, 0, length, 0, -b.lineLoad * length);
+  // The bottom particles nearest midspan (either side of a notch).
+  double nearest = std::numeric_limits<double>::max();
+  for (std::size_t k = 0; k < ps.size(); ++k) {
+    const double* f = ps.fixedRow(k);
+    if (isConcrete(f) && f[1] < tol) nearest = std::min(nearest, std::fabs(f[0] - mid));
+  }
+  monitor(ps, select(ps, [&](const double* f) {
+            return isConcrete(f) && f[1] < tol && std::fabs(f[0] - mid) <= nearest + tol;
+          }));
   return ps;
 }
 
@@ -177,7 +199,11 @@ BeamSpec beamSpec(const Params& p, const Params& model) {
   b.stirrupFirst = p.number("stirrup_first", b.stirrupFirst, 0.0, b.span);
   b.stirrupSpacing = p.number("stirrup_spacing", b.stirrupSpacing, 1e-300, big);
   b.stirrupCover = p.number("stirrup_cover", b.stirrupCover, 0.0, b.depth);
-  b.supportWidth = p.number("support_width", b.supportWidth, 0.0, b.span / 2);
+  b.overhang = p.number("overhang", b.overhang, 0.0, big);
+  b.supportWidth =
+      p.number("support_width", b.supportWidth, 0.0, b.overhang > 0 ? 2 * b.overhang : b.span / 2);
+  b.notchDepth = p.number("notch_depth", b.notchDepth, 0.0, b.depth);
+  b.notchWidth = p.number("notch_width", b.spacing, 0.0, b.span);
   b.supports = p.choice("supports", b.supports, {"simple", "bearings", "none"});
   b.lineLoad = p.number("line_load", b.lineLoad, -big, big);
   return b;
@@ -196,18 +222,24 @@ PDQ_REGISTER_GENERATOR(plateGenerator, "mplm_plate",
                        "  IDs            from 0, row by row from the bottom, along each row");
 PDQ_REGISTER_GENERATOR(beamGenerator, "mplm_beam",
                        "MPLM simply supported beam with bars and stirrups (thesis §4.4.3-6): "
-                       "span, depth, bar_*, stirrup_*, supports, support_width, line_load\n"
+                       "span, depth, overhang, notch_*, bar_*, stirrup_*, supports, "
+                       "support_width, line_load\n"
                        "  span, depth       in m (default 1.16, 0.26)\n"
+                       "  overhang          beyond each support, m (default 0: supports at the "
+                       "ends); the length is span + 2 overhang\n"
+                       "  notch_depth       a slot up from the bottom at midspan, m (default 0: "
+                       "none); notch_width its width, m (default and least: the spacing)\n"
                        "  bar_diameter      longitudinal bar, m (default 0: plain concrete)\n"
                        "  bar_centroid      its height above the bottom, m (default 0.02)\n"
                        "  stirrup_diameter  m (default 0: none); stirrup_first 0.04, "
                        "stirrup_spacing 0.15, stirrup_cover 0.02\n"
                        "  supports          simple, bearings or none (default simple); "
-                       "support_width 0.04\n"
+                       "support_width 0.04 (from each end; with an overhang, centred on the "
+                       "support)\n"
                        "  line_load         on the top layer at load_scale 1, N/m (default "
                        "1e3)\n"
                        "  spacing, thickness: the [model]'s\n"
-                       "  IDs               from 0: the concrete row by row from the bottom, "
-                       "then each bar's particles along it");
+                       "  IDs               from 0: the concrete row by row from the bottom "
+                       "(the notch left out), then each bar's particles along it");
 
 }  // namespace pdq::mplm

@@ -31,16 +31,23 @@ struct PlateSpec {
 ParticleSet plate(const PlateSpec& spec);
 
 // §4.4.3–4.4.6: a beam with its bottom-left corner at the origin, bars and stirrups, every
-// top-layer particle loaded downward (uniform line load), the bottom particle at midspan
-// monitored.
+// top-layer particle loaded downward (uniform line load), the bottom particles nearest
+// midspan monitored. Laboratory specimens add overhangs beyond the supports and a notch.
 struct BeamSpec {
   double span = 1.16, depth = 0.26, thickness = 0.12, spacing = 0.02;
+  // The beam extends this far beyond each support: its length is span + 2 overhang.
+  double overhang = 0;
+  // A slot up from the bottom face at midspan: concrete particles below notchDepth and
+  // within notchWidth/2 of midspan are left out (0: no notch). notchWidth must be at
+  // least the spacing, or interactions would still cross the slot.
+  double notchDepth = 0, notchWidth = 0.02;
   double barDiameter = 0, barCentroid = 0.02;  // 0: plain concrete
   double stirrupDiameter = 0, stirrupFirst = 0.04, stirrupSpacing = 0.15;
   double stirrupCover = 0.02;  // stirrups run from the bar's centroid to depth − cover
   // Bottom-row particles within this distance of an end are supported (0: the corner
-  // particle alone). A single particle carrying the whole reaction (8.7 kN at the plain
-  // beam's cracking load) is damaged long before the beam fails.
+  // particle alone); with an overhang, those within half of it of each support's line. A single
+  // particle carrying the whole reaction (8.7 kN at the plain beam's cracking load) is damaged long
+  // before the beam fails.
   double supportWidth = 0.04;
   // "simple": pinned at the left, roller at the right (held both ways); "bearings": the
   // beam rests on both (it may lift off; the left one also holds X at its corner);
@@ -48,7 +55,8 @@ struct BeamSpec {
   std::string supports = "simple";
   double lineLoad = 1e3;  // peak uniform load on the top layer at load_scale 1 (N/m); 0: none
 };
-// std::invalid_argument when the span is not a whole number of spacings.
+// std::invalid_argument when the span or the overhang is not a whole number of spacings,
+// or the notch is narrower than the spacing.
 ParticleSet beam(const BeamSpec& spec);
 
 // The specimen a generator table describes (InputError naming the key's line when a value

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The laboratory tests of docs/lab-tests.md: each scenario of examples/lab/ run under
+# displacement control past its peak on two ranks, its curve drawn over the measured one
+# into docs/lab/<test>.png with `pdq post plot` (pdq's curve as numbers in
+# docs/lab/<test>_pdq.csv), the damage at the peak into
+# docs/lab/<test>_peak.png with `pdq post picture`, and the README's table of laboratory
+# tests printed: measured peak, pdq's peak, their ratio. Runs and logs stay in the work
+# folder printed at the end.
+# Usage: bench/lab/run.sh [build-dir] [ranks]
+set -euo pipefail
+build=$(cd "${1:-build}" && pwd)
+ranks=${2:-2}
+src=$(cd "$(dirname "$0")/../.." && pwd)
+work=$(mktemp -d)
+cd "$work"
+run() {  # run <test>: the scenario examples/lab/<test>.toml into <test>_out
+  OMP_NUM_THREADS=1 mpirun --oversubscribe --allow-run-as-root -np "$ranks" "$build/pdq" \
+    run "$src/examples/lab/$1.toml" --out "$1_out" -q >"$1.log" 2>&1
+}
+# The peak row of quasi_static.csv: load step, load (N), displacement (m).
+peak() { awk -F, 'NR > 1 && (n == 0 || $7 > p) { n = $1; p = $7; d = $8 } END { print n, p, d }' \
+  "$1_out/quasi_static.csv"; }
+
+echo "| test | measured peak | pdq peak | pdq / measured | notes |"
+echo "| --- | --- | --- | --- | --- |"
+
+# Grégoire et al. 2013, notched beam: the load against the CMOD, the opening between the
+# bottom particles 20 mm apart either side of the notch (history_ids of the scenario).
+t=gregoire_notched
+if run $t; then
+  # timehist.dat: per load step a row for each gauge particle, in ID order (left, right).
+  awk '!/^#/ { if (!n || $1 != s) { n = 1; s = $1; a = $4 }
+               else { d = $4 - a; if (s == 0) d0 = d; print s, (d - d0) * 1e3 } }' \
+    $t"_out/timehist.dat" >cmod.txt
+  { echo "# pdq's curve of examples/lab/$t.toml (bench/lab/run.sh): per load step the CMOD"
+    echo "# (mm, between the bottom particles at x = 77.5 and 97.5 mm) and the load (N, the"
+    echo "# reaction of the pushed particles); the first row is the unloaded state."
+    echo "cmod_mm,load_N"; echo "0,0"
+    awk 'FNR == NR { cmod[$1] = $2; next } FNR > 1 { printf "%.9g,%.9g\n", cmod[$1], $7 }' \
+      cmod.txt FS=, $t"_out/quasi_static.csv"; } >"$src/docs/lab/${t}_pdq.csv"
+  read -r step load disp < <(peak $t)
+  cmod=$(awk -v s="$step" '$1 == s { printf "%.4f", $2 }' cmod.txt)
+  "$build/pdq" post plot "$src/docs/lab/gregoire2013_d50_half_notched_load_cmod.csv" \
+    "$src/docs/lab/${t}_pdq.csv" \
+    --x cmod_mm --label "measured, lower envelope" --label "measured, upper envelope" \
+    --label "pdq mplm2d" --y-scale 1e-3 --xlabel "CMOD (mm)" --ylabel "load (kN)" \
+    --title "Gregoire et al. 2013, notched beam D = 50 mm: load against CMOD" \
+    -o "$src/docs/lab/$t.png" >>$t.log
+  "$build/pdq" post picture "$src/examples/lab/$t.toml" \
+    --restart $t"_out/ParticleAlterAttrs.$step.rst" -o "$src/docs/lab/${t}_peak.png" \
+    --set "title=Gregoire notched beam: tensile damage at the peak (load step $step, $(printf %.0f "$load") N)" >>$t.log
+  printf "| Grégoire et al. 2013, notched beam D = 50 mm | 0.933–1.114 kN | %.3f kN at CMOD %s mm | %.2f–%.2f |  |\n" \
+    "$(echo "$load / 1000" | bc -l)" "$cmod" "$(echo "$load / 1114" | bc -l)" "$(echo "$load / 933" | bc -l)"
+else
+  echo "| Grégoire et al. 2013, notched beam | 0.933–1.114 kN | pdq run failed: see $work/$t.log |"
+fi
+echo
+echo "runs: $work/*_out; curves and pictures: $src/docs/lab/"
