@@ -360,10 +360,17 @@ bool Simulation::relaxLoadStep() {
     cfg_.steps = step_;
     ctx_->setSteps(step_);
   }
-  // A stop asked for from outside ends the run at this load step, as at a time step.
-  stopCode_ = stopCheck_ && step_ < cfg_.steps
-                  ? static_cast<int>(comm_.max(static_cast<double>(stopCheck_())))
-                  : 0;
+  // A stop asked for from outside ends the run at this load step, and a timed output
+  // (checkpoints every T minutes) is written at it, as at a time step: the ranks agree in
+  // one reduction.
+  bool asked = false;
+  for (const auto& o : outputs_)
+    if (o->timed()) asked |= o->requested();
+  std::vector<double> probe{stopCheck_ && step_ < cfg_.steps ? stopCheck_() : 0.0,
+                            asked ? 1.0 : 0.0};
+  if (stopCheck_ || timedOutputs_) probe = comm_.max(probe);
+  stopCode_ = static_cast<int>(probe[0]);
+  requestedNow_ = probe[1] > 0;
   const bool interrupted = stopCode_ > 0;
   return endStep(interrupted);
 }

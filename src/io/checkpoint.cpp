@@ -8,6 +8,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <string_view>
 
 #include "engine/atomic_file.hpp"
 #include "engine/checksum.hpp"
@@ -29,13 +30,6 @@ double seconds() {
 template <class T>
 void put(std::string& out, T v) {
   out.append(reinterpret_cast<const char*>(&v), sizeof v);
-}
-
-void putText(std::string& out, const std::string& name, const std::string& text) {
-  put(out, static_cast<std::uint32_t>(name.size()));
-  out += name;
-  put(out, static_cast<std::uint64_t>(text.size()));
-  out += text;
 }
 
 // A checkpoint read back: its header and the texts of its parts.
@@ -112,9 +106,16 @@ Contents readCheckpoint(const std::string& path) {
       c.texts.state = std::move(text);
     else if (name == "fixed")
       c.texts.fixed = std::move(text);
-    else if (name == "bonds")
+    else if (name == "bonds")  // the bonds as text: checkpoints of earlier versions
       c.texts.bonds = std::move(text);
-    else if (name == "particles")
+    else if (name == "bond rows") {
+      if (text.size() % sizeof(double) != 0)
+        throw InputError(path, 0,
+                         "damaged: its bond rows are " + std::to_string(text.size()) +
+                             " bytes, not a whole number of numbers");
+      auto& rows = c.texts.bondRows.emplace(text.size() / sizeof(double));
+      std::memcpy(rows.data(), text.data(), text.size());
+    } else if (name == "particles")
       c.texts.particles = std::move(text);
     else
       throw InputError(path, 0, "damaged: a part named '" + name + "'");
@@ -208,26 +209,40 @@ void CheckpointOutput::write(OutputContext& out) {
   if (out.step == lastWritten_) return;
   lastWritten_ = out.step;
   last_ = seconds();
-  const RestartTexts t = restartTexts(out);
+  const RestartTexts t = restartTexts(out, true);
   if (!out.comm.root()) return;
-  std::string bytes(kMagic, sizeof kMagic);
-  put(bytes, static_cast<std::uint64_t>(out.step));
-  put(bytes, out.ctx.time());
-  put(bytes, out.ctx.dt());
-  put(bytes, out.setupDt);
-  put(bytes, hash_);
-  const std::uint32_t parts = 2 + (t.fixed ? 1 : 0) + (t.bonds ? 1 : 0);
-  put(bytes, parts);
-  putText(bytes, "state", *t.state);
-  if (t.fixed) putText(bytes, "fixed", *t.fixed);
-  if (t.bonds) putText(bytes, "bonds", *t.bonds);
-  putText(bytes, "particles", t.particles);
-  put(bytes, crc32(bytes.data(), bytes.size()));
-  {
-    AtomicFile f(checkpointPath(out.outDir, out.step));
-    f.stream().write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    f.commit(true);
-  }
+  // Written part by part as the CRC-32 runs over them, so that the bonds (most of the
+  // bytes) are neither formatted as text nor copied into one buffer first.
+  AtomicFile f(checkpointPath(out.outDir, out.step));
+  std::uint32_t crc = 0;
+  auto emit = [&](std::string_view b) {
+    crc = crc32(b.data(), b.size(), crc);
+    f.stream().write(b.data(), static_cast<std::streamsize>(b.size()));
+  };
+  auto emitPart = [&](const std::string& name, std::string_view content) {
+    std::string head;
+    put(head, static_cast<std::uint32_t>(name.size()));
+    head += name;
+    put(head, static_cast<std::uint64_t>(content.size()));
+    emit(head);
+    emit(content);
+  };
+  std::string head(kMagic, sizeof kMagic);
+  put(head, static_cast<std::uint64_t>(out.step));
+  put(head, out.ctx.time());
+  put(head, out.ctx.dt());
+  put(head, out.setupDt);
+  put(head, hash_);
+  put(head, static_cast<std::uint32_t>(2 + (t.fixed ? 1 : 0) + (t.bondRows ? 1 : 0)));
+  emit(head);
+  emitPart("state", *t.state);
+  if (t.fixed) emitPart("fixed", *t.fixed);
+  if (t.bondRows)
+    emitPart("bond rows", std::string_view(reinterpret_cast<const char*>(t.bondRows->data()),
+                                           t.bondRows->size() * sizeof(double)));
+  emitPart("particles", t.particles);
+  f.stream().write(reinterpret_cast<const char*>(&crc), sizeof crc);
+  f.commit(true);
   // The newest `kept` stay; this one is the newest (begin removed any later).
   const auto steps = checkpointSteps(out.outDir);
   for (std::size_t k = 0; k + kept_ < steps.size(); ++k)

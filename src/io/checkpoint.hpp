@@ -2,16 +2,18 @@
 // Checkpoints: a run's complete state at a step in one file, <output>/checkpoint.<step>.ckpt
 // (the step zero-padded to 12 digits, so names sort as steps do), from which
 // `pdq run --resume <output>` continues bitwise as the uninterrupted run. A checkpoint holds
-// the texts of the step's restart files (io/restart.hpp: particles, bonds and their state,
-// the integrator's and the model's state, the time step), so both are written and read by
-// the same code and checked as strictly, behind a header (step, time, Δt, the time step
+// the texts of the step's restart files (io/restart.hpp: particles, the integrator's and
+// the model's state, the time step) and the rows of its bonds and their state in binary
+// (RestartTexts::bondRows), so both are written and read by the same code and checked as
+// strictly, behind a header (step, time, Δt, the time step
 // the model set up, a hash of the scenario) and followed by a CRC-32 of everything before
 // it. Written to a temporary, synced and renamed (engine/atomic_file.hpp); the newest
 // `kept` are kept. Layout (native byte order, as the machine that wrote it; a checkpoint
 // is for resuming on the same kind of machine):
 //   "PDQCKPT1"  u64 step  f64 time  f64 dt  f64 setup dt  u64 scenario hash  u32 parts
-//   per part: u32 name length, name ("state", "fixed", "bonds", "particles"),
-//             u64 text length, text
+//   per part: u32 name length, name ("state", "fixed", "bond rows", "particles"),
+//             u64 length, bytes (text; "bond rows": f64 owner ID, partner ID, dead flag,
+//             bond attributes, bond after bond, sorted by owner and partner)
 //   u32 CRC-32 of all the bytes above
 #include <cstdint>
 #include <string>

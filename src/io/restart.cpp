@@ -1,9 +1,10 @@
 #include "io/restart.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <map>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <unordered_map>
@@ -62,14 +63,21 @@ RestartNames restartNames(const std::string& dir, long step) {
           bondRestartPath(dir, step)};
 }
 
-RestartTexts restartTexts(OutputContext& out) {
+RestartTexts restartTexts(OutputContext& out, bool bondRows) {
   const Particles& P = out.ctx.particles;
   const Bonds& B = out.ctx.bonds;
   const Schema& s = P.schema();
   const int nA = s.nAlter(), nB = B.nAttr(), nF = s.nFixed();
   const bool withFixed = fixedChange(out);
   std::vector<double> rows, brows, frows;
-  for (std::size_t i = 0; i < P.owned(); ++i) {
+  brows.reserve(B.count() * (3 + nB));
+  // In ID order (each particle's bonds are in partner order), so that the rows are merged
+  // rather than sorted on rank 0.
+  std::vector<std::size_t> order(P.owned());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return P.gid(a) < P.gid(b); });
+  for (const std::size_t i : order) {
     rows.push_back(static_cast<double>(P.gid(i)));
     rows.insert(rows.end(), P.alter(i), P.alter(i) + nA);
     if (withFixed) {
@@ -85,7 +93,7 @@ RestartTexts restartTexts(OutputContext& out) {
   }
   const auto all = gatherSortedRows(out.comm, rows, 1 + nA);
   const long nBondsTotal = out.comm.sum(static_cast<long>(B.count()));
-  const auto allBonds =
+  auto allBonds =
       nBondsTotal ? gatherSortedRows(out.comm, brows, 3 + nB, 2) : std::vector<double>{};
   const auto allFixed =
       withFixed ? gatherSortedRows(out.comm, frows, 1 + nF) : std::vector<double>{};
@@ -113,7 +121,9 @@ RestartTexts restartTexts(OutputContext& out) {
     for (const auto& n : s.fixed) header += " " + n;
     t.fixed = rowsText(header + "\n", allFixed, 1 + nF);
   }
-  if (nBondsTotal) {
+  if (nBondsTotal && bondRows) {
+    t.bondRows = std::move(allBonds);
+  } else if (nBondsTotal) {
     std::string& f = t.bonds.emplace();
     f = "# pdq bonds: step " + std::to_string(out.step) + "\n# columns: id partner dead";
     for (const auto& n : s.bond) f += " " + n;
@@ -277,22 +287,37 @@ RestartState parseRestart(const RestartTexts& t, const RestartNames& names, Prob
       std::copy(r.values.begin() + 1, r.values.end(), ps.fixedRow(it->second));
     }
   const std::string& bpath = names.bonds;
-  if (!t.bonds) {
+  if (!t.bonds && !t.bondRows) {
     if (bondCount > 0)
       throw InputError(
           bpath, 0,
           "missing: " + spath + " says the state has " + std::to_string(bondCount) + " bonds");
     return bonds;
   }
-  {
+  const int nB = schema.nBond(), width = 3 + nB;
+  // Each bond's row (owner, partner, dead, attributes) and where it was read: its line in
+  // the text, or its row (from 1) in a checkpoint's binary rows.
+  std::vector<double> rows;
+  std::vector<int> lines;
+  if (t.bondRows) {
+    rows = *t.bondRows;
+    if (rows.size() % width != 0)
+      throw InputError(bpath, 0,
+                       "damaged: " + std::to_string(rows.size()) + " numbers, not rows of " +
+                           std::to_string(width));
+    lines.resize(rows.size() / width);
+    for (std::size_t r = 0; r < lines.size(); ++r) lines[r] = static_cast<int>(r + 1);
+  } else {
     const std::string first = t.bonds->substr(0, t.bonds->find('\n'));
     const std::string tag = "# pdq bonds: step " + std::to_string(step);
     if (first != tag)
       throw InputError(
           bpath, 1, "not the bonds of step " + std::to_string(step) + " (expected '" + tag + "')");
+    for (const auto& r : parseNumberTable(*t.bonds, bpath, width)) {
+      rows.insert(rows.end(), r.values.begin(), r.values.end());
+      lines.push_back(r.line);
+    }
   }
-  const int nB = schema.nBond();
-  std::map<std::pair<Gid, Gid>, int> lineOf;
   auto id = [&](double v, int line, const char* what) {
     const Gid g = static_cast<Gid>(v);
     if (static_cast<double>(g) != v || !index.count(g))
@@ -301,35 +326,48 @@ RestartState parseRestart(const RestartTexts& t, const RestartNames& names, Prob
           std::string(what) + " " + numberText(v) + " is not a particle of the problem");
     return g;
   };
-  for (const auto& r : parseNumberTable(*t.bonds, bpath, 3 + nB)) {
-    const Gid owner = id(r.values[0], r.line, "owner"),
-              partner = id(r.values[1], r.line, "partner");
+  struct Key {
+    Gid owner, partner;
+    int line;
+  };
+  std::vector<Key> keys;
+  keys.reserve(lines.size());
+  for (std::size_t r = 0; r < lines.size(); ++r) {
+    const double* v = &rows[r * width];
+    const int line = lines[r];
+    const Gid owner = id(v[0], line, "owner"), partner = id(v[1], line, "partner");
     if (owner == partner)
-      throw InputError(bpath, r.line, "particle " + std::to_string(owner) + " is bonded to itself");
-    if (r.values[2] != 0 && r.values[2] != 1)
-      throw InputError(bpath, r.line,
-                       "the dead flag is " + numberText(r.values[2]) + "; it must be 0 or 1");
-    if (!lineOf.emplace(std::make_pair(owner, partner), r.line).second)
-      throw InputError(
-          bpath, r.line,
-          "the bond " + std::to_string(owner) + "-" + std::to_string(partner) + " is listed twice");
+      throw InputError(bpath, line, "particle " + std::to_string(owner) + " is bonded to itself");
+    if (v[2] != 0 && v[2] != 1)
+      throw InputError(bpath, line, "the dead flag is " + numberText(v[2]) + "; it must be 0 or 1");
+    keys.push_back({owner, partner, line});
     bonds.owner.push_back(owner);
     bonds.partner.push_back(partner);
-    bonds.dead.push_back(r.values[2] != 0 ? 1 : 0);
-    bonds.attrs.insert(bonds.attrs.end(), r.values.begin() + 3, r.values.end());
+    bonds.dead.push_back(v[2] != 0 ? 1 : 0);
+    bonds.attrs.insert(bonds.attrs.end(), v + 3, v + width);
   }
+  auto before = [](const Key& a, const Key& b) {
+    return a.owner != b.owner ? a.owner < b.owner : a.partner < b.partner;
+  };
+  std::sort(keys.begin(), keys.end(), [&](const Key& a, const Key& b) {
+    return before(a, b) || (!before(b, a) && a.line < b.line);
+  });
+  for (std::size_t k = 1; k < keys.size(); ++k)
+    if (!before(keys[k - 1], keys[k]))
+      throw InputError(bpath, keys[k].line,
+                       "the bond " + std::to_string(keys[k].owner) + "-" +
+                           std::to_string(keys[k].partner) + " is listed twice");
   if (bondCount >= 0 && static_cast<long>(bonds.owner.size()) != bondCount)
     throw InputError(bpath, 0,
                      "has " + std::to_string(bonds.owner.size()) + " bonds but " + spath +
                          " says " + std::to_string(bondCount) + " (cut short?)");
   // Every bond is held by both of its particles.
-  for (const auto& [pair, line] : lineOf)
-    if (!lineOf.count({pair.second, pair.first}))
-      throw InputError(bpath, line,
-                       "the bond " + std::to_string(pair.first) + "-" +
-                           std::to_string(pair.second) + " has no partner line " +
-                           std::to_string(pair.second) + " " + std::to_string(pair.first) +
-                           " (one-sided)");
+  for (const Key& k : keys)
+    if (!std::binary_search(keys.begin(), keys.end(), Key{k.partner, k.owner, 0}, before))
+      throw InputError(bpath, k.line,
+                       "the bond " + std::to_string(k.owner) + "-" + std::to_string(k.partner) +
+                           " has no partner line " + std::to_string(k.partner) + " " +
+                           std::to_string(k.owner) + " (one-sided)");
   return bonds;
 }
 

@@ -12,6 +12,7 @@
 // or a dead flag other than 0 or 1 is an error naming the file and line.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/output.hpp"
 #include "engine/problem.hpp"
@@ -26,15 +27,19 @@ std::string stateRestartPath(const std::string& dir, long step);
 // The restart state of one step as the text of its files, in memory: what RestartOutput
 // writes as files and a checkpoint (io/checkpoint.hpp) holds in one file. Parts not written
 // at that step (fixed attributes of a non-periodic problem, bonds of a model without) are
-// empty.
+// empty. The bonds, by far the largest part, may instead be held as their rows of numbers
+// (owner ID, partner ID, dead flag, bond attributes; sorted by owner and partner), which a
+// checkpoint stores in binary: formatting them as text costs far more than writing them.
 struct RestartTexts {
   long step = -1;
   std::optional<std::string> state, fixed, bonds;
+  std::optional<std::vector<double>> bondRows;
   std::string particles;
 };
 
-// The state at out.step, on rank 0 (nothing elsewhere); collective.
-RestartTexts restartTexts(OutputContext& out);
+// The state at out.step, on rank 0 (nothing elsewhere); collective. `bondRows`: the bonds
+// as rows (RestartTexts::bondRows) rather than text.
+RestartTexts restartTexts(OutputContext& out, bool bondRows = false);
 
 // What each part is called in messages: its file (RestartOutput's names in a folder).
 struct RestartNames {

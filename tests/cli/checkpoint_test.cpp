@@ -242,9 +242,19 @@ TEST(Checkpoint, DamagedOnesAreSkippedWithAWarningNamingThem) {
   std::string flipped = good100;
   flipped[flipped.size() / 2] ^= 0x10;
   Parsed noBonds = parse(good100);
-  ASSERT_EQ(noBonds.parts.size(), 3u);  // state, bonds, particles
-  ASSERT_EQ(noBonds.parts[1].first, "bonds");
+  ASSERT_EQ(noBonds.parts.size(), 3u);  // state, bond rows, particles
+  ASSERT_EQ(noBonds.parts[1].first, "bond rows");
+  Parsed oddBonds = noBonds, oneSided = noBonds;
   noBonds.parts.erase(noBonds.parts.begin() + 1);
+  // The binary bond rows are checked as strictly as a bonds file: the first row's partner
+  // made an ID no particle has, or the part cut mid-number.
+  std::string& rows = oneSided.parts[1].second;
+  ASSERT_GE(rows.size(), 2 * sizeof(double));
+  double partner;
+  std::memcpy(&partner, rows.data() + sizeof(double), sizeof partner);
+  partner += 1000;
+  std::memcpy(rows.data() + sizeof(double), &partner, sizeof partner);
+  oddBonds.parts[1].second.pop_back();
   struct Spoilt {
     const char* name;
     std::string newest;  // checkpoint 100 as spoilt
@@ -256,6 +266,8 @@ TEST(Checkpoint, DamagedOnesAreSkippedWithAWarningNamingThem) {
       {"empty", "", "cut short: 0 bytes"},
       {"a flipped bit", flipped, "damaged: its CRC-32 is"},
       {"no bonds", build(noBonds), "[Bonds.100.rst]: missing: "},
+      {"a bond to no particle", build(oneSided), "[Bonds.100.rst]:1: partner "},
+      {"bond rows cut mid-number", build(oddBonds), "damaged: its bond rows are "},
   };
   for (const Spoilt& c : cases) {
     SCOPED_TRACE(c.name);
@@ -460,4 +472,33 @@ TEST(Checkpoint, BatchScriptsResumeAndSubmitThemselvesAgain) {
             "qsub -v SCENARIO=lattice.toml,PDQ_OUT=out,PDQ_SUBMISSION=4,PDQ_SCRIPT=/jobs/pdq.pbs,"
             "PDQ_WALL_TIME=3s,PDQ_OPTIONS= /jobs/pdq.pbs\n");
   EXPECT_GT(newestCheckpoint(dir + "/out"), second);
+}
+
+// A quasi-static run writes checkpoints on wall time too (at load steps, the ranks agreeing
+// as at time steps), and resuming from one ends as the uninterrupted run.
+TEST(Checkpoint, QuasiStaticRunsCheckpointOnWallTime) {
+  const std::string dir = freshDir("quasi_static_minutes");
+  writeFile(dir + "/qs.toml", R"([output]
+checkpoint_minutes = 1e-9   # at every load step
+checkpoints_kept = 10
+[solver]
+load_steps = 3
+kind = "quasi_static"
+max_iterations = 100000
+tolerance = 1e-6
+[model]
+name = "mplm2d"
+[particles]
+height = 0.12
+width = 0.1
+generator = "mplm_plate"
+)");
+  ASSERT_EQ(runPdq({"run", "qs.toml", "-q", "--out", "whole"}, dir).code, 0);
+  for (long s : {1, 2, 3}) EXPECT_TRUE(fs::exists(dir + "/whole/" + checkpointName(s))) << s;
+  fs::create_directories(dir + "/out");
+  fs::copy_file(dir + "/whole/" + checkpointName(2), dir + "/out/" + checkpointName(2));
+  const auto r = runPdq({"run", "qs.toml", "-q", "--resume", "out"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_EQ(readFile(dir + "/out/" + checkpointName(3)),
+            readFile(dir + "/whole/" + checkpointName(3)));
 }
