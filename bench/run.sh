@@ -5,7 +5,7 @@ set -uo pipefail
 BUILD=${1:?usage: bench/run.sh BUILD_DIR [quick]}
 cd "$(dirname "$0")/.."
 status=0
-for area in lj pd mplm post; do
+for area in lj pd mplm post scaling; do
   script=bench/$area/run.sh
   [ -f "$script" ] || continue
   echo
