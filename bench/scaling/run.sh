@@ -155,7 +155,8 @@ predict() {  # label geometry-output steps-for-total
       -v tl="$tl" -v ti="$ti" -v t1="$t1" -v total="$total" -v c="${c[$m]}" 'BEGIN {
         tc = 1e-9 * c * n   # compute of the busiest rank; the rest is communication
         printf "%-26s %6d %9s %9d %9d | %11.4g %4.0f%% %4.0f%% | %11.4g %4.0f%% %4.0f%%", l, p, g,
-          n, w, tl, 100 * (tl - tc) / tl, 100 * t1 / (p * tl), ti, 100 * (ti - tc) / ti,
+          n, w, tl, (tl > tc ? 100 * (tl - tc) / tl : 0), 100 * t1 / (p * tl), ti,
+          (ti > tc ? 100 * (ti - tc) / ti : 0),
           100 * t1 / (p * ti)
         if (total > 0) printf "   %d steps: %.3g h loopback, %.3g h InfiniBand", total,
           total * tl / 3600, total * ti / 3600
