@@ -27,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <map>
 #include <memory>
 #include <span>
 #include <string>
@@ -331,13 +332,18 @@ int geometry(int argc, char** argv, Comm& comm) {
 int main(int argc, char** argv) {
   MpiSession mpi(&argc, &argv);
   Comm comm;
-  try {
-    const std::string what = argc > 1 ? argv[1] : "";
-    if (what == "network") return network(comm);
-    if (what == "run") return run(argc, argv, comm);
-    if (what == "geometry") return geometry(argc, argv, comm);
+  using Command = int (*)(int, char**, Comm&);
+  const std::map<std::string, Command> commands{
+      {"network", [](int, char**, Comm& c) { return network(c); }},
+      {"run", run},
+      {"geometry", geometry}};
+  const auto command = commands.find(argc > 1 ? argv[1] : "");
+  if (command == commands.end()) {
     std::fprintf(stderr, "usage: scaling_bench network|run|geometry ...\n");
     return 2;
+  }
+  try {
+    return command->second(argc, argv, comm);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "scaling_bench: %s\n", e.what());
     comm.abort(1);
