@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The laboratory tests of docs/lab-tests.md: each scenario of examples/lab/ run under
+# The laboratory tests of docs/lab-tests.md: each scenario of bench/lab/ run under
 # displacement control past its peak on two ranks, its curve drawn over the measured one
 # into docs/lab/<test>.png with `pdq post plot` (pdq's curve as numbers in
 # docs/lab/<test>_pdq.csv), the damage at the peak into
@@ -13,9 +13,9 @@ ranks=${2:-2}
 src=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 cd "$work"
-run() {  # run <test>: the scenario examples/lab/<test>.toml into <test>_out
+run() {  # run <test>: the scenario bench/lab/<test>.toml into <test>_out
   OMP_NUM_THREADS=1 mpirun --oversubscribe --allow-run-as-root -np "$ranks" "$build/pdq" \
-    run "$src/examples/lab/$1.toml" --out "$1_out" -q >"$1.log" 2>&1
+    run "$src/bench/lab/$1.toml" --out "$1_out" -q >"$1.log" 2>&1
 }
 # The peak row of quasi_static.csv: load step, load (N), displacement (m).
 peak() { awk -F, 'NR > 1 && (n == 0 || $7 > p) { n = $1; p = $7; d = $8 } END { print n, p, d }' \
@@ -32,7 +32,7 @@ if run $t; then
   awk '!/^#/ { if (!n || $1 != s) { n = 1; s = $1; a = $4 }
                else { d = $4 - a; if (s == 0) d0 = d; print s, (d - d0) * 1e3 } }' \
     $t"_out/timehist.dat" >cmod.txt
-  { echo "# pdq's curve of examples/lab/$t.toml (bench/lab/run.sh): per load step the CMOD"
+  { echo "# pdq's curve of bench/lab/$t.toml (bench/lab/run.sh): per load step the CMOD"
     echo "# (mm, between the bottom particles at x = 77.5 and 97.5 mm) and the load (N, the"
     echo "# reaction of the pushed particles); the first row is the unloaded state."
     echo "cmod_mm,load_N"; echo "0,0"
@@ -46,7 +46,7 @@ if run $t; then
     --label "pdq mplm2d" --y-scale 1e-3 --xlabel "CMOD (mm)" --ylabel "load (kN)" \
     --title "Gregoire et al. 2013, notched beam D = 50 mm: load against CMOD" \
     -o "$src/docs/lab/$t.png" >>$t.log
-  "$build/pdq" post picture "$src/examples/lab/$t.toml" \
+  "$build/pdq" post picture "$src/bench/lab/$t.toml" \
     --restart $t"_out/ParticleAlterAttrs.$step.rst" -o "$src/docs/lab/${t}_peak.png" \
     --set "title=Gregoire notched beam: tensile damage at the peak (load step $step, $(printf %.0f "$load") N)" >>$t.log
   awk -v p="$load" -v c="$cmod" 'BEGIN { printf "| Grégoire et al. 2013, notched beam D = 50 mm | 0.933–1.114 kN | %.3f kN at CMOD %s mm | %.2f–%.2f | docs/lab-tests.md §5 |\n", p / 1000, c, p / 1114, p / 933 }'
