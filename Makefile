@@ -1,7 +1,7 @@
 # pdq: the two commands of the README, and the rest of the workflow.
 #   make run    install missing Debian packages, build, run the flagship example
 #   make test   the same, then the whole suite (MPI tests at 1-4 ranks, LAMMPS, ParaView)
-#   make fuzz   the libFuzzer targets of fuzz/ (clang, build-fuzz/), FUZZ_SECONDS each
+#   make fuzz   the libFuzzer targets of fuzz/ (clang), FUZZ_SECONDS each
 BUILD ?= build
 JOBS ?= $(shell nproc)
 PDQ = $(BUILD)/pdq
@@ -24,12 +24,18 @@ build: deps
 run: build
 	bash examples/flagship.sh $(PDQ)
 
+# The suite includes a short fuzz run (tests/fuzz/), which needs clang (deps-test has it).
+test: CMAKE_FLAGS += -DPDQ_FUZZ_TARGETS=ON
 test: deps-test build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 900
 
+# The fuzz targets as the suite builds them (tests/fuzz/), each run FUZZ_SECONDS.
 fuzz:
 	@bash tools/install-deps.sh fuzz
-	JOBS=$(JOBS) bash tools/fuzz.sh $(or $(FUZZ_SECONDS),600)
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DPDQ_FUZZ_TARGETS=ON >/dev/null
+	@cmake --build $(BUILD) -j$(JOBS) --target pdq_fuzz_targets
+	FUZZ_BIN=$(BUILD)/tests/fuzz/build FUZZ_OUT=$(BUILD)/fuzz-findings \
+	  bash tools/fuzz.sh $(or $(FUZZ_SECONDS),600)
 
 bench: deps-test build
 	bash bench/run.sh $(BUILD)

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "spring_case.hpp"
+
 namespace pdq::fuzz {
 
 namespace fs = std::filesystem;
@@ -49,5 +51,17 @@ std::vector<std::string> split(const std::uint8_t* data, std::size_t size, std::
 }
 
 void limitMemory() { setenv("PDQ_MEMORY_LIMIT", "200M", 1); }
+
+const std::string& springCase() {
+  static const std::string path = [] {
+    limitMemory();
+    const test::SpringCaseTexts t = test::springCaseTexts(20);
+    writeFile(workDir() + "/fixed.dat", t.fixed);
+    writeFile(workDir() + "/alter.dat", t.alter);
+    writeFile(workDir() + "/lattice.toml", t.scenario);
+    return workDir() + "/lattice.toml";
+  }();
+  return path;
+}
 
 }  // namespace pdq::fuzz

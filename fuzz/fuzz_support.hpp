@@ -17,5 +17,9 @@ std::vector<std::string> split(const std::uint8_t* data, std::size_t size, std::
 // Sets the memory pdq believes the machine has, so that a scenario asking for more is
 // refused before it allocates rather than exhausting the fuzzer's limit.
 void limitMemory();
+// The tests' breaking spring lattice (tests/cli/spring_case.hpp, 20 steps), written into
+// workDir() at the first call (lattice.toml, fixed.dat, alter.dat), after limitMemory().
+// Returns the scenario's path.
+const std::string& springCase();
 
 }  // namespace pdq::fuzz

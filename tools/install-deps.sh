@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages pdq needs, only those that are missing.
-# Usage: tools/install-deps.sh [build|test|viz|fuzz]   (test adds the peers; viz adds
-# ParaView; fuzz: clang and its libFuzzer, for fuzz/)
+# Usage: tools/install-deps.sh [build|test|viz|fuzz]   (test adds the peers and clang with
+# its libFuzzer, for the suite's short fuzz run; viz adds ParaView; fuzz: clang and
+# libFuzzer alone, for fuzz/)
 set -euo pipefail
 need=(cmake g++ make pkg-config libopenmpi-dev openmpi-bin libcli11-dev libtomlplusplus-dev
       libfmt-dev libgtest-dev libcairo2-dev)
 case "${1:-build}" in
-  test) need+=(lammps) ;;
-  viz) need+=(lammps paraview python3-paraview) ;;
-  fuzz) need+=(clang libclang-rt-14-dev) ;;
+  test) need+=(lammps clang-14 libclang-rt-14-dev) ;;
+  viz) need+=(lammps paraview python3-paraview clang-14 libclang-rt-14-dev) ;;
+  fuzz) need+=(clang-14 libclang-rt-14-dev) ;;
 esac
 missing=()
 for p in "${need[@]}"; do

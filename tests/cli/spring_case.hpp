@@ -8,10 +8,14 @@
 
 namespace pdq::test {
 
-// Writes <dir>/fixed.dat, <dir>/alter.dat and <dir>/<name> (the scenario, whose output
-// goes to <dir>/out); `extra` is appended to the scenario. Returns the scenario's path.
-inline std::string springCase(const std::string& dir, long steps, const std::string& extra = "",
-                              const std::string& name = "lattice.toml") {
+// The case's texts: fixed.dat, alter.dat and the scenario (its output goes to out/), with
+// `extra` appended to the scenario. The fuzz targets of restart files and checkpoints read
+// them too.
+struct SpringCaseTexts {
+  std::string fixed, alter, scenario;
+};
+
+inline SpringCaseTexts springCaseTexts(long steps, const std::string& extra = "") {
   std::string fixed = "# id X Y Z\n", alter = "# id x y z vx vy vz\n";
   for (int j = 0; j < 8; ++j)
     for (int i = 0; i < 16; ++i) {
@@ -20,8 +24,6 @@ inline std::string springCase(const std::string& dir, long steps, const std::str
       fixed += id + " " + x + " " + y + " 0\n";
       alter += id + " " + x + " " + y + " 0 0 0 0\n";
     }
-  writeFile(dir + "/fixed.dat", fixed);
-  writeFile(dir + "/alter.dat", alter);
   const std::string scenario =
       "# a breaking spring lattice\n"
       "steps = " +
@@ -64,7 +66,17 @@ globals_every = 5
 history_every = 5
 history_ids = [0, 127]
 )" + extra;
-  writeFile(dir + "/" + name, scenario);
+  return {fixed, alter, scenario};
+}
+
+// Writes <dir>/fixed.dat, <dir>/alter.dat and <dir>/<name> (the scenario, whose output
+// goes to <dir>/out). Returns the scenario's path.
+inline std::string springCase(const std::string& dir, long steps, const std::string& extra = "",
+                              const std::string& name = "lattice.toml") {
+  const SpringCaseTexts t = springCaseTexts(steps, extra);
+  writeFile(dir + "/fixed.dat", t.fixed);
+  writeFile(dir + "/alter.dat", t.alter);
+  writeFile(dir + "/" + name, t.scenario);
   return dir + "/" + name;
 }
 
