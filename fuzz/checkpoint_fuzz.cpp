@@ -7,7 +7,6 @@
 #include "engine/error.hpp"
 #include "fuzz_support.hpp"
 #include "io/checkpoint.hpp"
-#include "scenario/scenario.hpp"
 
 using namespace pdq;
 
@@ -17,9 +16,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::uint32_t crc = crc32(bytes.data(), bytes.size());
   bytes.append(reinterpret_cast<const char*>(&crc), sizeof crc);
   fuzz::writeFile(checkpointPath(d, 10), bytes);
-  Scenario sc = readScenario(fuzz::springCase());
   try {
-    resumeFromCheckpoint(d, 0, true, sc.problem);
+    resumeFromCheckpoint(d, 0, true, fuzz::springProblem());
   } catch (const Error&) {
   }
   return 0;

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "scenario/scenario.hpp"
 #include "spring_case.hpp"
 
 namespace pdq::fuzz {
@@ -62,6 +63,15 @@ const std::string& springCase() {
     return workDir() + "/lattice.toml";
   }();
   return path;
+}
+
+Problem& springProblem() {
+  static Scenario sc = readScenario(springCase());
+  static const ParticleSet particles = sc.problem.particles;
+  static const RunConfig run = sc.problem.run;
+  sc.problem.particles = particles;
+  sc.problem.run = run;
+  return sc.problem;
 }
 
 }  // namespace pdq::fuzz

@@ -1,10 +1,12 @@
 #pragma once
 // What the fuzz targets share: a private folder to write their inputs into, the input cut
-// into files, and the one answer to bad input pdq allows (pdq::Error).
+// into files, and the tests' spring lattice that restart files and checkpoints are read for.
 #include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
+
+#include "engine/problem.hpp"
 
 namespace pdq::fuzz {
 
@@ -21,5 +23,8 @@ void limitMemory();
 // workDir() at the first call (lattice.toml, fixed.dat, alter.dat), after limitMemory().
 // Returns the scenario's path.
 const std::string& springCase();
+// The spring lattice's problem, read once, with the particles and run it was read with (a
+// restart replaces them).
+Problem& springProblem();
 
 }  // namespace pdq::fuzz
