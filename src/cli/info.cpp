@@ -1,5 +1,6 @@
 // pdq info: what a scenario will do, from its setup, without stepping or writing files.
 #include <cstdio>
+#include <filesystem>
 
 #include "cli/commands.hpp"
 #include "cli/summary.hpp"
@@ -11,6 +12,25 @@ namespace pdq::cli {
 
 void infoCommand(const InfoOptions& o) {
   Comm comm;
+  // The sizes first, from the scenario alone; a problem too large for the memory available
+  // is reported and not made. One that fits is made, and the estimate printed after what
+  // was made.
+  std::string estimate;
+  if (!std::filesystem::is_directory(o.input)) {
+    const Scenario est = readScenario(o.input, true);
+    if (est.estimate) {
+      bool fits = true;
+      estimate = estimateSummary(*est.estimate, *est.problem.model, fits);
+      if (!fits) {
+        if (comm.root())
+          std::printf(
+              "input         %s\n%snot made      it would not fit in the memory available: "
+              "make the lattice coarser or the specimen smaller, or run on more nodes\n",
+              o.input.c_str(), estimate.c_str());
+        return;
+      }
+    }
+  }
   Scenario sc = loadScenario(o.input);
   Problem& pb = sc.problem;
   std::string sets;
@@ -36,7 +56,7 @@ void infoCommand(const InfoOptions& o) {
     if (given)
       std::printf("reference     [strength] reference: %s %s\n", given->text.c_str(),
                   ref.unit.c_str());
-    std::printf("output        %s\n", outDir.c_str());
+    std::printf("output        %s\n%s", outDir.c_str(), estimate.c_str());
   }
 }
 

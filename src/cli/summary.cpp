@@ -4,9 +4,11 @@
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/decomposition.hpp"
 #include "engine/error.hpp"
+#include "engine/memory.hpp"
 
 namespace pdq::cli {
 
@@ -38,10 +40,8 @@ std::string summary(Simulation& sim, const std::string& modelName, const std::st
   const double maxGhosts = comm.max(static_cast<double>(P.ghosts()));
   // The particle and bond tables of this rank (the engine's own data; a model's
   // neighbour lists and scratch come on top, and the peak below includes them).
-  const double tables = static_cast<double>(P.local()) * 8 * (1 + s.nFixed() + s.nAlter()) +
-                        static_cast<double>(P.owned()) * 8 * s.nInteg() +
-                        static_cast<double>(B.count()) * (8 + 4 + 1 + 8 * s.nBond()) +
-                        static_cast<double>(P.owned() + 1) * 8;
+  const double tables = tableBytes(s, static_cast<double>(P.local()),
+                                   static_cast<double>(P.owned()), static_cast<double>(B.count()));
   ExactSum acc;
   acc.add(tables);
   const double tablesTotal = comm.sum(acc), tablesMax = comm.max(tables);
@@ -104,6 +104,47 @@ std::string summary(Simulation& sim, const std::string& modelName, const std::st
         "particles per rank\n",
         ranks, axes(p, dim), axes(c, dim), owned / ranks);
   }
+  return o;
+}
+
+std::string estimateSummary(const SizeEstimate& e, const Model& model, bool& fits) {
+  const Schema s = model.schema();
+  const double particles = e.particles + e.extraParticles;
+  const bool lattice = !e.primitive.empty();
+  const bool bonded = model.bondsWithinHorizon();
+  const double bonds = bonded ? e.pairsWithin(model.horizon()) + e.extraPairs : 0;
+  std::string o = "estimate      from the scenario, before anything is made:\n";
+  o += fmt::format("  particles   {:.0f}\n", particles);
+  if (!bonded)
+    o += "  bonds       none (the model keeps no bonds)\n";
+  else if (lattice)
+    o += fmt::format("  bonds       {:.0f} (the lattice's pairs within the horizon {:.6g})\n",
+                     bonds, model.horizon());
+  else
+    o += "  bonds       not estimated (particles from files: no lattice)\n";
+  if (lattice) {
+    // Cells as the decomposition lays them: the box and a margin of one horizon each side.
+    std::string cells;
+    double count = 1;
+    for (int a = 0; a < 3; ++a) {
+      if (!(e.hi[a] > e.lo[a])) continue;
+      const double n = std::max(
+          1.0, std::floor((e.hi[a] - e.lo[a] + 2 * model.horizon()) / model.minCellSize()));
+      count *= n;
+      cells += fmt::format("{}{:.0f}", cells.empty() ? "" : " x ", n);
+    }
+    o += fmt::format("  cells       {} ({:.0f}; cell size {:.6g})\n", cells, count,
+                     model.minCellSize());
+  }
+  o += fmt::format("  attributes  {} fixed, {} alterable, {} integration a particle; {} a bond\n",
+                   s.nFixed(), s.nAlter(), s.nInteg(), s.nBond());
+  const double bytes = tableBytes(s, particles, particles, 2 * bonds);
+  const double have = availableMemory();
+  fits = bytes <= have;
+  o += fmt::format(
+      "  memory      {} for the particle and bond tables (a model's own arrays come on top); "
+      "{} available{}\n",
+      byteText(bytes), byteText(have), fits ? "" : ": it does not fit");
   return o;
 }
 

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "engine/simulation.hpp"
+#include "prep/generator.hpp"
 
 namespace pdq::cli {
 
@@ -11,5 +12,11 @@ namespace pdq::cli {
 // pdq would choose for that many ranks.
 std::string summary(Simulation& sim, const std::string& modelName, const std::string& source,
                     int ranks = 0);
+
+// The sizes of a problem estimated before anything is made (prep/generator.hpp): particles,
+// bonds (the lattice's pairs within the model's horizon), cells, attributes and the memory
+// of the particle and bond tables, against what the machine has. `fits`: whether that
+// memory is available.
+std::string estimateSummary(const SizeEstimate& e, const Model& model, bool& fits);
 
 }  // namespace pdq::cli

@@ -41,6 +41,11 @@ std::string byteText(double bytes) {
   return buf;
 }
 
+double tableBytes(const Schema& s, double local, double owned, double bondEntries) {
+  return local * 8 * (1 + s.nFixed() + s.nAlter()) + owned * 8 * s.nInteg() +
+         bondEntries * (8 + 4 + 1 + 8 * s.nBond()) + (owned + 1) * 8;
+}
+
 void checkParticleCount(double count, double bytesEach, const std::string& what) {
   const double need = count * bytesEach, have = availableMemory();
   if (!(need <= have)) {

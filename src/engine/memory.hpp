@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/error.hpp"
+#include "engine/schema.hpp"
 
 namespace pdq {
 
@@ -23,6 +24,12 @@ double availableMemory();
 // attributes alone; this machine has N GB available ...") when `count` particles of
 // `bytesEach` bytes exceed the available memory. `what`: who makes them.
 void checkParticleCount(double count, double bytesEach, const std::string& what);
+
+// The bytes of the engine's particle and bond tables (a model's neighbour lists and
+// scratch come on top): `local` particles' fixed and alterable rows (owned and ghosts),
+// `owned` ones' integration rows and bond offsets, and `bondEntries` bonds (each held by
+// both its particles).
+double tableBytes(const Schema& schema, double local, double owned, double bondEntries);
 
 // "1.5 GB", "320 MB", ...
 std::string byteText(double bytes);

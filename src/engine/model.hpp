@@ -61,6 +61,9 @@ class Model {
   // True when particles change neighbours (molecular dynamics): the engine then shuffles
   // particles between cells and ranks, and bins them by current position.
   virtual bool shuffles() const { return false; }
+  // True when setup bonds the particles within the horizon (of the lattice, as `pdq info`
+  // estimates them before any particle exists); false for a model without bonds.
+  virtual bool bondsWithinHorizon() const { return true; }
 
   virtual void setup(Context&) {}
   virtual void prepare(Context&) {}

@@ -1,5 +1,6 @@
 #include "prep/fcc.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -9,6 +10,7 @@
 
 #include "engine/error.hpp"
 #include "engine/memory.hpp"
+#include "prep/lattice.hpp"
 
 namespace pdq {
 
@@ -154,6 +156,40 @@ std::vector<std::array<double, 3>> closePackedFill(const ClosePacked& L,
     start[k] = origin[k] + inset[k];
   }
   return closePackedBox(L, inner, start);
+}
+
+double closePackedFillCount(const ClosePacked& L, const std::array<double, 3>& size) {
+  const int a = L.bondAxis, z = L.stackAxis, c = 3 - a - z;
+  const auto inset = closePackedInset(L);
+  const double s = L.s, p = std::sqrt(3.0) / 2 * s, tol = 1e-9 * s;
+  auto inner = [&](int k) { return size[k] - inset[k] + tol; };
+  // As closePackedBox lays them: layer k has phase k % 3, its rows start phase p/3 across,
+  // and a row's first point is shifted by its parity and phase.
+  const double layers = prep::latticeSteps(inner(z), 0, closePackedLayerPitch(s));
+  double count = 0;
+  for (int phase = 0; phase < 3; ++phase) {
+    const double ofPhase = std::max(0.0, std::ceil((layers - phase) / 3));
+    const double rows = prep::latticeSteps(inner(c), phase * p / 3, p);
+    for (int parity = 0; parity < 2; ++parity) {
+      const double shift = std::fmod(parity * s / 2 + phase * s / 2, s);
+      const double ofParity = parity ? std::floor(rows / 2) : std::ceil(rows / 2);
+      count += ofPhase * ofParity * prep::latticeSteps(inner(a), shift, s);
+    }
+  }
+  return count;
+}
+
+std::array<std::array<double, 3>, 3> closePackedVectors(const ClosePacked& L) {
+  const int a = L.bondAxis, z = L.stackAxis, c = 3 - a - z;
+  const double s = L.s, p = std::sqrt(3.0) / 2 * s;
+  std::array<std::array<double, 3>, 3> v{};
+  v[0][a] = s;
+  v[1][a] = s / 2;
+  v[1][c] = p;
+  v[2][a] = s / 2;
+  v[2][c] = p / 3;
+  v[2][z] = closePackedLayerPitch(s);
+  return v;
 }
 
 }  // namespace pdq

@@ -60,6 +60,10 @@ std::vector<std::array<double, 3>> closePackedBox(const ClosePacked& lattice,
 std::vector<std::array<double, 3>> closePackedFill(const ClosePacked& lattice,
                                                    const std::array<double, 3>& size,
                                                    const std::array<double, 3>& origin = {0, 0, 0});
+// How many points closePackedFill makes, counted without making them.
+double closePackedFillCount(const ClosePacked& lattice, const std::array<double, 3>& size);
+// The lattice's three vectors: along the bonds, to the next row, to the next layer.
+std::array<std::array<double, 3>, 3> closePackedVectors(const ClosePacked& lattice);
 // closePackedFill's first plane from each box corner face: s/4 along the bonds, (√3/12)s
 // across the rows, half the layer pitch along the stacking.
 std::array<double, 3> closePackedInset(const ClosePacked& lattice);

@@ -6,6 +6,8 @@
 //     temperature = 1.44        # optional: random velocities (into vx, vy, vz)
 //     seed = 87287              # optional
 //     mass = 1.0                # optional, for the temperature
+#include <cmath>
+
 #include "engine/error.hpp"
 #include "prep/fcc.hpp"
 #include "prep/generator.hpp"
@@ -13,7 +15,7 @@
 namespace pdq {
 namespace {
 
-Generated fcc(const Params& p, const Schema& schema) {
+FccSpec readFcc(const Params& p) {
   FccSpec s;
   const auto cells = p.numbers("cells");
   const auto where = p.raw("cells");
@@ -32,6 +34,11 @@ Generated fcc(const Params& p, const Schema& schema) {
   s.mass = p.number("mass", 1.0, 1e-300, 1e300);
   s.seed = static_cast<std::uint64_t>(p.integer("seed", 1));
   s.firstId = p.integer("first_id", 1);
+  return s;
+}
+
+Generated fcc(const Params& p, const Schema& schema) {
+  FccSpec s = readFcc(p);
   s.velocityColumn = schema.alterIndex("vx");
   Generated g;
   g.particles.nFixed = schema.nFixed();
@@ -42,8 +49,25 @@ Generated fcc(const Params& p, const Schema& schema) {
   return g;
 }
 
+// Four sites a cell, a quarter of a cell from its faces (makeFcc); the fcc lattice's
+// vectors join a site to its twelve nearest neighbours.
+SizeEstimate fccSize(const Params& p, const Params&) {
+  const FccSpec s = readFcc(p);
+  const double a = std::cbrt(4.0 / s.density);
+  SizeEstimate e;
+  e.particles = 4.0 * s.cells[0] * s.cells[1] * s.cells[2];
+  for (int k = 0; k < 3; ++k) {
+    e.lo[k] = s.origin[k] + a / 4;
+    e.hi[k] = s.origin[k] + (s.cells[k] - 0.25) * a;
+    e.stride[k] = a / 2;
+  }
+  e.primitive = {{0, a / 2, a / 2}, {a / 2, 0, a / 2}, {a / 2, a / 2, 0}};
+  return e;
+}
+
 }  // namespace
 
+PDQ_REGISTER_ESTIMATE(fccSize, "fcc");
 PDQ_REGISTER_GENERATOR(fcc, "fcc",
                        "fcc crystal filling a periodic box: cells, density, temperature, seed\n"
                        "  cells        [nx, ny, nz] unit cells of 4 sites (required)\n"

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "engine/memory.hpp"
+#include "prep/lattice.hpp"
 
 namespace pdq::prep {
 
@@ -35,6 +36,15 @@ std::vector<std::array<double, 2>> hexagonalRectangle(double lx, double ly, doub
     }
   }
   return pts;
+}
+
+double hexagonalRectangleCount(double lx, double ly, double s, HexOrientation o) {
+  const bool alongX = o == HexOrientation::BondsAlongX;
+  const double along = alongX ? lx : ly, across = alongX ? ly : lx, tol = 1e-9 * s;
+  const double rows = latticeSteps(across + tol, 0, hexPitch(s));
+  // Even rows start at 0 along the row, odd ones at s/2.
+  return std::ceil(rows / 2) * latticeSteps(along + tol, 0, s) +
+         std::floor(rows / 2) * latticeSteps(along + tol, s / 2, s);
 }
 
 }  // namespace pdq::prep

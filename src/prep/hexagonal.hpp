@@ -21,5 +21,7 @@ std::vector<std::array<double, 2>> hexagonalRectangle(double lx, double ly, doub
 
 // Distance between rows (X orientation) or columns (Y orientation): (√3/2) s.
 double hexPitch(double s);
+// How many points hexagonalRectangle makes, counted without making them.
+double hexagonalRectangleCount(double lx, double ly, double s, HexOrientation o);
 
 }  // namespace pdq::prep

@@ -1,5 +1,7 @@
 #include "prep/lattice.hpp"
 
+#include <cmath>
+
 #include "engine/error.hpp"
 #include "engine/memory.hpp"
 
@@ -23,6 +25,10 @@ std::size_t appendLattice(ParticleSet& ps, const Lattice& L) {
         ps.add(id++, L.origin[0] + i * L.spacing, L.origin[1] + j * L.spacing,
                L.origin[2] + k * L.spacing);
   return first;
+}
+
+double latticeSteps(double length, double first, double step) {
+  return length >= first ? std::floor((length - first) / step) + 1 : 0.0;
 }
 
 Lattice squareLattice(int nx, int ny, double spacing, std::array<double, 3> origin) {

@@ -19,6 +19,10 @@ struct Lattice {
 // first + i + n0 (j + n1 k).
 std::size_t appendLattice(ParticleSet& ps, const Lattice& lattice);
 
+// How many of first, first + step, first + 2 step, ... are at most `length` (a row of a
+// lattice, counted without making it).
+double latticeSteps(double length, double first, double step);
+
 Lattice squareLattice(int nx, int ny, double spacing, std::array<double, 3> origin = {});
 Lattice cubicLattice(int nx, int ny, int nz, double spacing, std::array<double, 3> origin = {});
 

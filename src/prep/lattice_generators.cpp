@@ -18,7 +18,7 @@
 namespace pdq::prep {
 namespace {
 
-Generated lattice(const Params& p, const Schema& schema, const Params& model, bool cubic) {
+Lattice readLattice(const Params& p, bool cubic) {
   Lattice L;
   const char* keys[3] = {"nx", "ny", "nz"};
   for (int a = 0; a < (cubic ? 3 : 2); ++a) {
@@ -42,6 +42,11 @@ Generated lattice(const Params& p, const Schema& schema, const Params& model, bo
     std::copy(o.begin(), o.end(), L.origin.begin());
   }
   L.firstId = p.integer("first_id", 1);
+  return L;
+}
+
+Generated lattice(const Params& p, const Schema& schema, const Params& model, bool cubic) {
+  const Lattice L = readLattice(p, cubic);
   Generated g;
   g.particles.nFixed = schema.nFixed();
   g.particles.nAlter = schema.nAlter();
@@ -63,8 +68,28 @@ Generated cubic(const Params& p, const Schema& s, const Params& m) {
   return lattice(p, s, m, true);
 }
 
+SizeEstimate latticeSize(const Params& p, bool cubic) {
+  const Lattice L = readLattice(p, cubic);
+  SizeEstimate e;
+  e.particles = double(L.n[0]) * L.n[1] * L.n[2];
+  for (int a = 0; a < (cubic ? 3 : 2); ++a) {
+    e.lo[a] = L.origin[a];
+    e.hi[a] = L.origin[a] + (L.n[a] - 1) * L.spacing;
+    e.stride[a] = L.spacing;
+    std::array<double, 3> v{};
+    v[a] = L.spacing;
+    e.primitive.push_back(v);
+  }
+  return e;
+}
+
+SizeEstimate squareSize(const Params& p, const Params&) { return latticeSize(p, false); }
+SizeEstimate cubicSize(const Params& p, const Params&) { return latticeSize(p, true); }
+
 }  // namespace
 
+PDQ_REGISTER_ESTIMATE(squareSize, "square");
+PDQ_REGISTER_ESTIMATE(cubicSize, "cubic");
 PDQ_REGISTER_GENERATOR(square, "square",
                        "square lattice (2D): nx, ny, spacing, origin, first_id\n"
                        "  nx, ny      points along X and Y (required; whole numbers >= 1)\n"

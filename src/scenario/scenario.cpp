@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <optional>
 #include <set>
 
@@ -124,7 +125,20 @@ void readModel(const toml::table& root, const std::string& file, Scenario& sc) {
   pb.model = ModelRegistry::create(pb.modelName, sc.modelParams, file, nameLine);
 }
 
-Generated readParticles(const toml::table& root, const std::string& file, Scenario& sc) {
+// The particle records of a particle file, counted without reading them into memory.
+double countRecords(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  double n = 0;
+  while (std::getline(in, line)) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first != std::string::npos && line[first] != '#') ++n;
+  }
+  return n;
+}
+
+Generated readParticles(const toml::table& root, const std::string& file, Scenario& sc,
+                        bool estimateOnly) {
   Problem& pb = sc.problem;
   const toml::table* t = subTable(root, "particles", file);
   if (!t)
@@ -146,6 +160,13 @@ Generated readParticles(const toml::table& root, const std::string& file, Scenar
     // The generator's own errors name the generator's line.
     gp.set("generator", name->text, file, name->line);
     gp.accept("generator");
+    if (estimateOnly) {
+      sc.generator = name->text;
+      pb.run.particlesLine = name->line;
+      for (const auto& [known, what] : EstimateRegistry::list())
+        if (known == name->text) sc.estimate = EstimateRegistry::get(known)(gp, sc.modelParams);
+      return g;
+    }
     try {
       g = gen(gp, schema, sc.modelParams);
     } catch (const MemoryError& e) {
@@ -176,6 +197,10 @@ Generated readParticles(const toml::table& root, const std::string& file, Scenar
     const std::string fixed = path("fixed"), alter = path("alter");
     p.accept("set");
     p.checkAllUsed();
+    if (estimateOnly) {
+      sc.estimate.emplace().particles = countRecords(fixed);
+      return g;
+    }
     g.particles = readParticleFiles(fixed, alter, schema);
     pb.run.particlesLine = p.raw("fixed")->line;
   } else {
@@ -310,7 +335,7 @@ void readOutput(const toml::table& root, const std::string& file, Problem& pb) {
 
 }  // namespace
 
-Scenario readScenario(const std::string& path) {
+Scenario readScenario(const std::string& path, bool estimateOnly) {
   if (!fs::is_regular_file(path))
     throw InputError(path, 0, "cannot read the scenario: no such file");
   toml::table root;
@@ -376,7 +401,8 @@ Scenario readScenario(const std::string& path) {
   }
 
   readModel(root, path, sc);
-  Generated g = readParticles(root, path, sc);
+  Generated g = readParticles(root, path, sc, estimateOnly);
+  if (estimateOnly) return sc;
   pb.particles = std::move(g.particles);
   if (controlled) {
     pb.run.solver.control.ids = controlled->selected(pb.particles);

@@ -13,11 +13,13 @@
 //
 // Every value keeps its file and line; a key nobody reads is an error at its line with
 // the nearest known key suggested.
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "engine/params.hpp"
 #include "engine/problem.hpp"
+#include "prep/generator.hpp"
 
 namespace pdq {
 
@@ -42,11 +44,17 @@ struct Scenario {
     std::size_t particles;
   };
   std::vector<SetCount> setCounts;
+  // With readScenario(path, true): what the generator would make, or the number of
+  // particles in the particle files (no lattice then).
+  std::optional<SizeEstimate> estimate;
 };
 
 // Reads a TOML scenario: creates and configures the model, builds or reads the particles
 // and checks everything that can be checked before a run (InputError with file:line).
-Scenario readScenario(const std::string& path);
+// `estimateOnly`: the particles are not made, their sizes estimated instead (`estimate`;
+// none for a generator without an estimate), and the tables after [particles]
+// ([[particles.set]], [solver.control], [decomposition], [output]) are not read.
+Scenario readScenario(const std::string& path, bool estimateOnly = false);
 
 // A scenario file, or a folder holding the thesis's .dat files (io/thesis_input.hpp).
 Scenario loadScenario(const std::string& path);

@@ -371,3 +371,39 @@ TEST(Reliability, OutputFolderUnderAFileIsReportedOnceWithTheCause) {
   EXPECT_EQ(occurrences(r.err, "pdq: error:"), 1) << r.err;
   EXPECT_THAT(r.err, Not(HasSubstr("filesystem error")));
 }
+
+// A restart's interaction damage outside [0, 1] (omega_t = 7 in its Bonds file) is refused
+// rather than run with a negative stiffness.
+TEST(Reliability, MplmRestartWithDamageOutOfRangeIsRefused) {
+  const std::string dir = freshDir("damage_range");
+  writeFile(dir + "/plate.toml", R"(steps = 4
+[model]
+name = "mplm2d"
+[particles]
+generator = "mplm_plate"
+width = 0.06
+height = 0.06
+[output]
+restart_every = 2
+)");
+  ASSERT_EQ(runPdq({"run", "plate.toml", "-q", "--out", "out"}, dir).code, 0);
+  const std::string bonds = readFile(dir + "/out/Bonds.2.rst");
+  // The first bond (line 3): "owner partner dead omega_t ...": its omega_t made 7.
+  const auto line = bonds.find('\n', bonds.find('\n') + 1) + 1;
+  std::size_t at = line;
+  for (int k = 0; k < 3; ++k) at = bonds.find(' ', at) + 1;
+  const std::string edited = bonds.substr(0, at) + "7" + bonds.substr(bonds.find(' ', at));
+  writeFile(dir + "/out/Bonds.2.rst", edited);
+  const auto r = runPdq(
+      {"run", "plate.toml", "-q", "--restart", "out/ParticleAlterAttrs.2.rst", "--out", "again"},
+      dir);
+  EXPECT_EQ(r.code, 1) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("has an interaction whose damage omega_t or omega_c is outside "
+                               "[0, 1]"));
+  writeFile(dir + "/out/Bonds.2.rst", bonds);
+  EXPECT_EQ(runPdq({"run", "plate.toml", "-q", "--restart", "out/ParticleAlterAttrs.2.rst", "--out",
+                    "again"},
+                   dir)
+                .code,
+            0);
+}

@@ -52,6 +52,7 @@ class LennardJones final : public Model {
   double horizon() const override { return pair_.rc; }
   double minCellSize() const override { return pair_.rc + skin_; }
   bool shuffles() const override { return true; }
+  bool bondsWithinHorizon() const override { return false; }  // pair lists, no bonds
 
   void setup(Context& ctx) override { ctx.setDt(dt_); }
   void prepare(Context& ctx) override { buildLists(ctx); }

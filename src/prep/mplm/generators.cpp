@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -14,6 +15,7 @@
 #include "models/mplm/2d/parameters.hpp"
 #include "prep/generator.hpp"
 #include "prep/hexagonal.hpp"
+#include "prep/lattice.hpp"
 #include "prep/mplm/specimen.hpp"
 
 namespace pdq::mplm {
@@ -153,6 +155,42 @@ Generated beamGenerator(const Params& p, const Schema& schema, const Params& mod
   }
 }
 
+// A hexagonal lattice of `lx` by `ly` from the origin, as hexagonalRectangle lays it.
+SizeEstimate hexagonalSize(double lx, double ly, double s, prep::HexOrientation o) {
+  SizeEstimate e;
+  e.particles = prep::hexagonalRectangleCount(lx, ly, s, o);
+  const bool alongX = o == prep::HexOrientation::BondsAlongX;
+  const double p = prep::hexPitch(s);
+  e.hi = {lx, ly, 0};
+  e.stride = {alongX ? s : p, alongX ? p : s, 0};
+  e.primitive = {alongX ? std::array<double, 3>{s, 0, 0} : std::array<double, 3>{0, s, 0},
+                 alongX ? std::array<double, 3>{s / 2, p, 0} : std::array<double, 3>{p, s / 2, 0}};
+  return e;
+}
+
+SizeEstimate plateSize(const Params& p, const Params& model) {
+  const PlateSpec spec = plateSpec(p, model);
+  return hexagonalSize(spec.width, spec.height, spec.spacing,
+                       prep::hexOrientation(spec.orientation));
+}
+
+SizeEstimate beamSize(const Params& p, const Params& model) {
+  const BeamSpec b = beamSpec(p, model);
+  const double s = b.spacing, length = b.span + 2 * b.overhang;
+  SizeEstimate e = hexagonalSize(length, b.depth, s, prep::HexOrientation::BondsAlongX);
+  // The notch leaves out about its area's share of the lattice (s (sqrt(3)/2) s a site).
+  if (b.notchDepth > 0) e.particles -= b.notchDepth * b.notchWidth / (s * prep::hexPitch(s));
+  if (b.barDiameter > 0) e.extraParticles += std::ceil(length / s) + 1;
+  if (b.stirrupDiameter > 0)
+    e.extraParticles += prep::latticeSteps(length - b.stirrupFirst + b.stirrupSpacing / 2,
+                                           b.stirrupFirst, b.stirrupSpacing) *
+                        (std::ceil((b.depth - b.stirrupCover - b.barCentroid) / s) + 1);
+  // Steel interacts with its neighbours along its bar, and every other steel particle (a
+  // link) with the concrete within s: about pi s^2 / (s (sqrt(3)/2) s) of it.
+  e.extraPairs = e.extraParticles * (1 + std::numbers::pi / prep::hexPitch(1) / 2);
+  return e;
+}
+
 }  // namespace
 
 PlateSpec plateSpec(const Params& p, const Params& model) {
@@ -209,6 +247,8 @@ BeamSpec beamSpec(const Params& p, const Params& model) {
   return b;
 }
 
+PDQ_REGISTER_ESTIMATE(plateSize, "mplm_plate");
+PDQ_REGISTER_ESTIMATE(beamSize, "mplm_beam");
 PDQ_REGISTER_GENERATOR(plateGenerator, "mplm_plate",
                        "MPLM plate loaded along Y at both ends (thesis §4.4.1-2): width, height, "
                        "orientation, loading, stress, traction\n"

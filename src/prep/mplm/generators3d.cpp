@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "engine/error.hpp"
 #include "models/mplm/3d/attributes.hpp"
 #include "models/mplm/common/parameters.hpp"
 #include "prep/generator.hpp"
+#include "prep/lattice.hpp"
 #include "prep/mplm/specimen.hpp"
 #include "prep/mplm/specimen3d.hpp"
 
@@ -157,6 +159,32 @@ Generated beamGenerator(const Params& p, const Schema& schema, const Params& mod
   return g;
 }
 
+SizeEstimate beamSize(const Params& p, const Params& model) {
+  const BeamSpec b = beamSpec(p, model);
+  const std::array<double, 3> size{b.length, b.depth, b.width};
+  const auto inset = closePackedInset(b.lattice);
+  SizeEstimate e;
+  e.particles = closePackedFillCount(b.lattice, size);
+  for (int a = 0; a < 3; ++a) {
+    e.lo[a] = inset[a];
+    e.hi[a] = size[a];
+  }
+  e.stride = closePackedMinimumBox(b.lattice);
+  for (const auto& v : closePackedVectors(b.lattice)) e.primitive.push_back(v);
+  const double s = b.lattice.s;
+  e.extraParticles = static_cast<double>(b.bars.size()) * (std::ceil(b.length / s) + 1);
+  if (b.stirrups) {
+    const double around = 2 * (b.hoopYHi() - b.hoopYLo() + b.hoopZHi() - b.hoopZLo());
+    e.extraParticles +=
+        prep::latticeSteps(b.length - b.stirrups->first, b.stirrups->first, b.stirrups->spacing) *
+        std::ceil(around / s);
+  }
+  // Steel interacts with its neighbours along its bar, and every other steel particle (a
+  // link) with the concrete within s: about (4/3) pi s^3 / (s^3 / sqrt(2)) of it.
+  e.extraPairs = e.extraParticles * (1 + 4.0 / 3 * std::numbers::pi * std::sqrt(2.0) / 2);
+  return e;
+}
+
 }  // namespace
 
 double BeamSpec::hoopYLo() const { return stirrups->cover + stirrups->section.diameter / 2; }
@@ -285,6 +313,7 @@ ParticleSet beam(const BeamSpec& b) {
   return ps;
 }
 
+PDQ_REGISTER_ESTIMATE(beamSize, "mplm3d_beam");
 PDQ_REGISTER_GENERATOR(beamGenerator, "mplm3d_beam",
                        "3D MPLM member (fcc lattice): length, depth, width, bonds_along, "
                        "layers_along, supports (clamped, simple, bearings), loading (tip, top), "

@@ -18,6 +18,7 @@
 #include "models/mplm/2d/attributes.hpp"
 #include "models/mplm/2d/interaction.hpp"
 #include "models/mplm/2d/parameters.hpp"
+#include "models/mplm/common/bond_state.hpp"
 #include "models/mplm/common/lattice.hpp"
 #include "models/mplm/common/time_step.hpp"
 
@@ -46,6 +47,7 @@ class Mplm2d final : public Model {
   }
 
   void prepare(Context& ctx) override {
+    mplm::checkDamageRange(ctx, "mplm2d");
     Particles& P = ctx.particles;
     const std::size_t n = P.owned();
     in_.fill(

@@ -21,6 +21,7 @@
 #include "models/mplm/3d/attributes.hpp"
 #include "models/mplm/3d/elastic_constants.hpp"
 #include "models/mplm/3d/interaction.hpp"
+#include "models/mplm/common/bond_state.hpp"
 #include "models/mplm/common/interactions.hpp"
 #include "models/mplm/common/lattice.hpp"
 #include "models/mplm/common/parameters.hpp"
@@ -76,6 +77,7 @@ class Mplm3d final : public Model {
   }
 
   void prepare(Context& ctx) override {
+    mplm::checkDamageRange(ctx, "mplm3d");
     Particles& P = ctx.particles;
     const std::size_t n = P.owned();
     in_.fill(
