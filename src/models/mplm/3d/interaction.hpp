@@ -47,11 +47,12 @@ inline void referenceFrame(const Vec& n0, Vec& e2, Vec& e3) {
 // What the co-rotational form needs beyond the end rotations to turn the element's end
 // loads into the gradient of its energy: the frame qb = qs ⊗ qm built from the mean triad qm
 // = p/|p| (p = q_i ± q_j) and the smallest rotation qs from a = R(qm) n0 to the chord's
-// direction e1; the end rotations vi, vj = log(qb* ⊗ q) in reference components.
+// direction e1; the end rotations vi, vj = log(qb* ⊗ q) in reference components; sgn the
+// sign that put q_j on q_i's hemisphere in p.
 struct Frame {
-  Quat qb, qs, p, qi;
+  Quat qb, qs, p, qi, qj;
   Vec a, e1, vi, vj;
-  double L;
+  double L, sgn;
 };
 
 // Deformation of the interaction in its local frame: elongation, chord length, the end
@@ -108,7 +109,7 @@ inline Chord corotChord(const Interaction& k, const Vec& r, const Quat& qi, cons
           {dot(vj, k.n0), dot(vj, e2), dot(vj, e3)},
           e2,
           e3,
-          {qb, qs, p, qi, a, e1, vi, vj, L},
+          {qb, qs, p, qi, qj, a, e1, vi, vj, L, sgn},
           true};
 }
 
@@ -120,8 +121,10 @@ inline Chord corotChord(const Interaction& k, const Vec& r, const Quat& qi, cons
 // P = I − e1 e1ᵀ) and from the triads through the mean p = q_i ± q_j; with H = h_i + h_j:
 //   H·δβ = δr·P G_b / L + δμ·G,  δμ·G = δφ_i·(u₀ G + u × G)/|p|² + (j's part),
 // (u₀, u) = q_i ⊗ p*, G_b = W × a − κ a, G = a × (e1 × W − κ e1) + R(qs)ᵀ H,
-// W = H − (c × H)/(1 + a·e1), κ = (H·c)/(1 + a·e1), c = a × e1.
-inline void corotLoad(const Frame& fr, double N, const Vec& gi, const Vec& gj, Vec& f, Vec& m) {
+// W = H − (c × H)/(1 + a·e1), κ = (H·c)/(1 + a·e1), c = a × e1. The moment on j (when `mj`
+// is given) is the same with h_j and ± (q_j ⊗ p*) (p holds ± q_j); the force on j is −f.
+inline void corotLoad(const Frame& fr, double N, const Vec& gi, const Vec& gj, Vec& f, Vec& m,
+                      Vec* mj) {
   const Vec hi = rotate(fr.qb, turnGradient(fr.vi, gi));
   const Vec hj = rotate(fr.qb, turnGradient(fr.vj, gj));
   const Vec H{hi[0] + hj[0], hi[1] + hj[1], hi[2] + hj[2]};
@@ -144,6 +147,10 @@ inline void corotLoad(const Frame& fr, double N, const Vec& gi, const Vec& gj, V
     f[d] = N * e1[d] - (Gb[d] - along * e1[d]) * invL;
     m[d] = -hi[d] + (u.w * G[d] + uG[d]) * invP;
   }
+  if (!mj) return;
+  const Quat uj = mul(fr.qj, conj(fr.p));
+  const Vec ujG = cross({uj.x, uj.y, uj.z}, G);
+  for (int d = 0; d < 3; ++d) (*mj)[d] = -hj[d] + fr.sgn * (uj.w * G[d] + ujG[d]) * invP;
 }
 
 struct EndLoad {
@@ -153,8 +160,10 @@ struct EndLoad {
 
 // The elastic force on i after damage, updating the interaction's state (ω_t, ω_c, plastic
 // stretch) in `state` when `update`; a null `state` gives the undamaged elastic interaction.
+// With `mj`, also the moment on j (whose force is −f and whose `keep` is the same), so that
+// one evaluation serves both ends.
 inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::DamageLaw& law,
-                            double* state, bool update) {
+                            double* state, bool update, Vec* mj = nullptr) {
   const Vec& ti = ch.ti;
   const Vec& tj = ch.tj;
   const double epsA = ch.da * k.invL0;  // eq. 4.7
@@ -195,7 +204,7 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::D
       gi[d] = -T * k.n0[d] + Myi * e2[d] + Mzi * e3[d];
       gj[d] = T * k.n0[d] + Myj * e2[d] + Mzj * e3[d];
     }
-    corotLoad(ch.frame, N, gi, gj, f, m);
+    corotLoad(ch.frame, N, gi, gj, f, m, mj);
     return {f, m, axialKeep};
   }
   // Local components on i: force (N, −(Mz_i+Mz_j)/L, (My_i+My_j)/L), moment (T, −My_i, −Mz_i).
@@ -204,6 +213,8 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::D
     f[d] = N * k.n0[d] + f2 * e2[d] + f3 * e3[d];
     m[d] = T * k.n0[d] - Myi * e2[d] - Mzi * e3[d];
   }
+  if (mj)
+    for (int d = 0; d < 3; ++d) (*mj)[d] = -T * k.n0[d] - Myj * e2[d] - Mzj * e3[d];
   return {f, m, axialKeep};
 }
 

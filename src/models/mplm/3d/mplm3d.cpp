@@ -108,11 +108,42 @@ class Mplm3d final : public Model {
     mplm::reportTimeStep(ctx, "mplm3d", omegaMax_, stable, thesisDt);
   }
 
+  // Each interaction is evaluated once, from its end with the smaller global ID, which
+  // gives both its particles their loads and both copies of its state; an interaction with
+  // a ghost is evaluated alike by the two ranks that hold it (its constants are symmetric
+  // in its ends and its reference chord negates exactly), so results do not depend on
+  // ranks or threads. Each particle then sums its ends in bond order, with damping.
   void force(Context& ctx) override {
     Particles& P = ctx.particles;
     Bonds& B = ctx.bonds;
     const long n = static_cast<long>(P.owned());
     if (!corot_) rotationVectors(P);
+    ends_.resize(B.count());
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      const Gid gi = P.gid(i);
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const Interaction& k = inter_[b];
+        const auto j = static_cast<std::size_t>(k.j);
+        Vec mj;
+        if (gi < B.partnerGid(b)) {
+          const EndLoad e = load(k, P.alter(i), P.alter(j), i, B.attr(b), true, &mj);
+          ends_[b] = e;
+          if (j < static_cast<std::size_t>(n)) {
+            const std::size_t r = reverse(B, j, gi);
+            ends_[r] = {{-e.f[0], -e.f[1], -e.f[2]}, mj, e.keep};
+            std::copy_n(B.attr(b), N_BOND, B.attr(r));
+          }
+        } else if (j >= static_cast<std::size_t>(n)) {
+          Interaction kj = k;  // as the ghost's owner holds it
+          kj.j = static_cast<std::int32_t>(i);
+          kj.r0 = {-k.r0[0], -k.r0[1], -k.r0[2]};
+          kj.n0 = {-k.n0[0], -k.n0[1], -k.n0[2]};
+          const EndLoad e = load(kj, P.alter(j), P.alter(i), j, B.attr(b), true, &mj);
+          ends_[b] = {{-e.f[0], -e.f[1], -e.f[2]}, mj, e.keep};
+        }
+      }
+    }
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
       const double* a = P.alter(i);
@@ -120,7 +151,7 @@ class Mplm3d final : public Model {
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
         const Interaction& k = inter_[b];
         const double* aj = P.alter(k.j);
-        const EndLoad e = load(k, a, aj, i, B.attr(b), true);
+        const EndLoad& e = ends_[b];
         for (int d = 0; d < 3; ++d) {
           f[d] += e.f[d] + e.keep * k.c * (aj[VX + d] - a[VX + d]);
           m[d] += e.m[d] + e.keep * k.cr * (aj[WX + d] - a[WX + d]);
@@ -339,10 +370,23 @@ class Mplm3d final : public Model {
   }
 
   // The elastic load of interaction k on particle i (alterable rows a, aj) in the model's
-  // kinematics; the rotation vectors of the small form come from rotationVectors().
+  // kinematics, and with `mj` the moment on its partner; the rotation vectors of the small
+  // form come from rotationVectors().
   EndLoad load(const Interaction& k, const double* a, const double* aj, std::size_t i,
-               double* state, bool update) const {
-    return elasticForce(k, chord(k, a, aj, i), par_.law, state, update);
+               double* state, bool update, Vec* mj = nullptr) const {
+    return elasticForce(k, chord(k, a, aj, i), par_.law, state, update, mj);
+  }
+  // The bond of owned particle j whose partner is gid (bonds are sorted by partner ID).
+  static std::size_t reverse(const Bonds& B, std::size_t j, Gid gid) {
+    std::size_t lo = B.begin(j), hi = B.end(j);
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (B.partnerGid(mid) < gid)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    return lo;
   }
   Chord chord(const Interaction& k, const double* a, const double* aj, std::size_t i) const {
     const Vec r{aj[AX] - a[AX], aj[AY] - a[AY], aj[AZ] - a[AZ]};
@@ -479,6 +523,7 @@ class Mplm3d final : public Model {
   bool surface_ = true;  // surface_correction
   ElasticConstants k_;
   std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
+  std::vector<EndLoad> ends_;       // per bond: elastic load on its particle, this step
   mutable std::vector<Vec> th_;     // rotation vector per local particle (small form)
   mplm::Inertia in_;
   double omegaMax_ = 0;
