@@ -19,8 +19,8 @@ namespace pdq::mplm3d {
 using mplm::Kind;
 
 struct Interaction {
-  std::int32_t j = 0;  // partner's local index
-  Kind kind = Kind::Concrete;
+  std::int32_t j = 0;        // partner's local index
+  std::uint32_t rev = 0;     // an owned partner's bond back to this particle
   Vec r0{}, n0{};            // reference chord X_j − X_i and its direction
   double L0 = 0, invL0 = 0;  // reference length d
   double ka = 0;             // axial stiffness a/d (N/m)
@@ -28,6 +28,7 @@ struct Interaction {
   double kt = 0;             // c/d: torsional moment kt (θ̄x_j − θ̄x_i)
   double c = 0, cr = 0;      // damping of relative velocity and angular velocity
   double epsY = 0;           // bars: yield stretch F_y/E_s
+  Kind kind = Kind::Concrete;
 };
 
 // The reference frame (n0, e2, e3) of an interaction: e2 ⟂ n0 from the global axis along

@@ -83,6 +83,8 @@ class Mplm3d final : public Model {
     in_.fill(
         P, [&](const double* f) { return massOf(f); },
         [&](const double* f) { return inertiaOf(f); });
+    if (ctx.bonds.count() > std::numeric_limits<std::uint32_t>::max())
+      throw std::length_error("mplm3d: more than 2^32 interaction ends on one rank");
     inter_.resize(ctx.bonds.count());
     const std::vector<double> surface = surfaceFactors(ctx);
     // Gershgorin bound of the largest eigenvalue of M⁻¹C, C the damping of eq. 4.21.
@@ -92,6 +94,8 @@ class Mplm3d final : public Model {
       for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
         inter_[b] =
             makeInteraction(P, i, static_cast<std::size_t>(ctx.bonds.partner(b)), surface[b]);
+        const auto j = static_cast<std::size_t>(ctx.bonds.partner(b));
+        if (j < n) inter_[b].rev = static_cast<std::uint32_t>(reverse(ctx.bonds, j, P.gid(i)));
         gt += 2 * inter_[b].c;
         gr += 2 * inter_[b].cr;
       }
@@ -130,7 +134,7 @@ class Mplm3d final : public Model {
           const EndLoad e = load(k, P.alter(i), P.alter(j), i, B.attr(b), true, &mj);
           ends_[b] = e;
           if (j < static_cast<std::size_t>(n)) {
-            const std::size_t r = reverse(B, j, gi);
+            const std::size_t r = k.rev;
             ends_[r] = {{-e.f[0], -e.f[1], -e.f[2]}, mj, e.keep};
             std::copy_n(B.attr(b), N_BOND, B.attr(r));
           }
