@@ -53,7 +53,7 @@ for model in pmb lps; do
 done
 
 echo
-echo "== Instability check (non-finite values, every step) on the PMB block, 1 rank =="
+echo "== Instability checks (non-finite values, skin, growing motion; every step) on the PMB block, 1 rank =="
 (cd "$WORK" && "$BENCH" check_cost "$N" 200)
 (cd "$WORK" && "$BENCH" checkpoint_cost "$N" 200 50)
 

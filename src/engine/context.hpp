@@ -80,6 +80,10 @@ class Context {
   }
   const std::vector<std::string>& warnings() const { return warnings_; }
   bool root() const { return comm_.root(); }
+  // A model that knows its stable time step tells it; the engine names it when a run turns
+  // out unstable.
+  void setStableDt(double dt) { stableDt_ = dt; }
+  double stableDt() const { return stableDt_; }
 
   // --- set by the engine ---
   void setStep(long s) { step_ = s; }
@@ -93,7 +97,7 @@ class Context {
   Comm& comm_;
   std::ostream& log_;
   long step_ = 0, steps_ = 0;
-  double dt_ = 0;
+  double dt_ = 0, stableDt_ = 0;
   Loading loading_;
   bool quasiStatic_ = false;
   double staticFactor_ = 0;

@@ -211,6 +211,8 @@ void Simulation::setup() {
   if (comm_.root())
     for (const auto& name : removeStrayTemporaries(cfg_.outDir))
       debug_ << "removed " << name << ", left by a run killed while writing it\n";
+  keepPositions();
+  checkedStep_ = step_;
   setUp_ = true;
   if (cfg_.solver.quasiStatic && resumed_ && comm_.root()) {
     // A restarted run continues the curve: the rows up to its restart step.
@@ -396,13 +398,17 @@ bool Simulation::advance() {
   }
   // Instability is looked for before anything is saved, so no restart file holds it.
   const bool check = (cfg_.checkEvery > 0 && step_ % cfg_.checkEvery == 0) || saving;
+  const bool checkMoves = cfg_.checkEvery > 0 && step_ % cfg_.checkEvery == 0;
   // One reduction a step, when anything needs one: a stop asked for from outside, how far
-  // particles moved since the last shuffle, the first unstable particle and a timed output
-  // asked for.
+  // particles moved since the last shuffle, the first unstable particle, a timed output
+  // asked for and the largest distance moved per step since the last check.
   const double none = -std::numeric_limits<double>::infinity();
   std::vector<double> probe{stopCheck_ ? static_cast<double>(stopCheck_()) : 0.0,
                             model_->shuffles() ? cube_->maxDisplacementSinceRebuild() : 0.0,
-                            check ? firstUnstable() : none, asked ? 1.0 : 0.0};
+                            check ? firstUnstable() : none,
+                            asked ? 1.0 : 0.0,
+                            checkMoves ? (measureMoves(), localMove_) : 0.0,
+                            checkMoves && bounced_ ? 1.0 : 0.0};
   if (stopCheck_ || model_->shuffles() || check || timedOutputs_) probe = comm_.max(probe);
   requestedNow_ = probe[3] > 0;
   // A state saved on time is checked too (in a second reduction: checks were not due).
@@ -419,6 +425,7 @@ bool Simulation::advance() {
        << " (cell size minus horizon), so neighbours may have been missed";
     reportInstability(static_cast<Gid>(comm_.max(far)), os.str());
   }
+  if (checkMoves) checkMotion(probe[4], probe[5] > 0);
   // The last step ends the run anyway, with its own outputs.
   stopCode_ = step_ < cfg_.steps ? static_cast<int>(probe[0]) : 0;
   const bool interrupted = stopCode_ > 0;
@@ -433,6 +440,9 @@ bool Simulation::advance() {
     cube_->shuffle(step_);
     integrator_->particlesMoved();
     model_->neighboursChanged(*ctx_);
+    // The particles changed order (and periodic ones wrapped): moves count from here.
+    keepPositions();
+    checkedStep_ = step_;
     stats_.shuffles++;
     stats_.maxShuffleMessages = std::max(stats_.maxShuffleMessages, cube_->stats().shuffleMessages);
   } else {
@@ -495,6 +505,80 @@ double Simulation::firstUnstable() const {
   return -static_cast<double>(first);
 }
 
+void Simulation::measureMoves() {
+  const std::size_t n = particles_.owned();
+  const bool consecutive = step_ - checkedStep_ == 1;
+  double most = 0;
+  movedMost_ = 0;
+  bounced_ = false;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double* x = particles_.alter(i);
+    double* kept = &checkedPos_[3 * i];
+    const double dx = x[0] - kept[0], dy = x[1] - kept[1], dz = x[2] - kept[2];
+    const double d = dx * dx + dy * dy + dz * dz;
+    // Of equal moves the largest ID, as over the ranks, so the grid does not choose.
+    if (d > most || (d == most && particles_.gid(i) > particles_.gid(movedMost_))) {
+      most = d, movedMost_ = i;
+      mostStep_ = {dx, dy, dz};
+    }
+    if (i == tracked_ && consecutive) {
+      const double back = dx * trackedStep_[0] + dy * trackedStep_[1] + dz * trackedStep_[2];
+      bounced_ = back < 0 && d >= kGrowth * kGrowth * trackedMove_;
+    }
+    std::copy_n(x, 3, kept);
+  }
+  const double steps = static_cast<double>(step_ - checkedStep_);
+  checkedStep_ = step_;
+  localMove_ = steps > 0 ? std::sqrt(most) / steps : 0.0;
+  localMost_ = most;
+}
+
+void Simulation::keepPositions() {
+  const std::size_t n = particles_.owned();
+  checkedPos_.resize(3 * n);
+  for (std::size_t i = 0; i < n; ++i) std::copy_n(particles_.alter(i), 3, &checkedPos_[3 * i]);
+  tracked_ = kNone;
+}
+
+void Simulation::checkMotion(double move, bool bounced) {
+  const double none = -std::numeric_limits<double>::infinity();
+  const bool mine = particles_.owned() > 0 && localMove_ == move;
+  auto mover = [&] {
+    return static_cast<Gid>(
+        comm_.max(mine ? static_cast<double>(particles_.gid(movedMost_)) : none));
+  };
+  const double skin = dec_->minActiveCellSize();
+  if (!model_->shuffles() && move > skin) {
+    // No neighbour is lost (bonds hold their partners), but no stable run moves a
+    // particle across a cell in one step.
+    std::ostringstream os;
+    os << "moved " << move << " in one step, more than the skin (one cell, " << skin << ")";
+    reportInstability(mover(), os.str());
+  }
+  // A time step above the stable one shows in the fastest particle: the highest mode's
+  // amplitude multiplies each step and, its frequency being above the step's Nyquist
+  // limit, the particle goes back and forth from step to step. Physical motion, resolved
+  // by many steps, keeps its direction from one step to the next (a load ramp, a released
+  // bond, free flight), and an oscillation near the limit does not grow.
+  if (bounced) {
+    if (growing_++ == 0) growthFrom_ = lastMove_;
+  } else {
+    growing_ = 0;
+  }
+  lastMove_ = move;
+  // Follow the fastest particle to the next step (on the rank that owns it).
+  tracked_ = mine ? movedMost_ : kNone;
+  trackedStep_ = mostStep_;
+  trackedMove_ = localMost_;
+  if (growing_ >= kGrowthSteps) {
+    std::ostringstream os;
+    os << "moved " << move << " in the last step: the fastest particle has gone back and forth "
+       << "at every step since step " << step_ - growing_ << ", each move at least " << kGrowth
+       << " times the one before (from " << growthFrom_ << "), so the motion grows without bound";
+    reportInstability(mover(), os.str());
+  }
+}
+
 void Simulation::reportInstability(Gid id, const std::string& what) {
   // The owner describes the particle; every rank throws the same message.
   std::string mine;
@@ -522,9 +606,10 @@ void Simulation::reportInstability(Gid id, const std::string& what) {
   all = comm_.broadcast(all);
   std::ostringstream os;
   os << "step " << step_ << ": " << std::string(all.begin(), all.end())
-     << "; the run is unstable: lower the time step (dt = " << ctx_->dt()
-     << ") or check the loads, supports and material parameters; restart files written "
-        "before this step hold good states";
+     << "; the run is unstable: lower the time step (dt = " << ctx_->dt();
+  if (ctx_->stableDt() > 0) os << "; the model's stable step is " << ctx_->stableDt();
+  os << ") or check the loads, supports and material parameters; checkpoints and restart "
+        "files written before this step hold finite states";
   throw RunError(os.str());
 }
 

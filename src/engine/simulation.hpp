@@ -5,6 +5,7 @@
 // with timers for every phase and a stop the model may request.
 #include <array>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <sstream>
@@ -39,7 +40,8 @@ struct RunConfig {
   std::string source = "input";  // file named in configuration errors
   int particlesLine = 0;         // its line that gives the particles (generator or files)
   // Check for instability (non-finite attributes or forces, a particle moving further
-  // than the skin) every N steps (0: only at steps that save restart files).
+  // than the skin, motion growing without bound) every N steps (0: only the non-finite
+  // values, at steps that save restart files).
   long checkEvery = 1;
 };
 
@@ -114,6 +116,14 @@ class Simulation {
   Domain makeDomain() const;
   void writeOutputs(bool last, bool checkpoint = false);
   double firstUnstable() const;  // -(smallest unstable particle's ID) on this rank, or -inf
+  // The largest distance an owned particle moved since the last check, per step
+  // (localMove_), which particle moved it (movedMost_), and whether the particle followed
+  // from the step before went back, further (bounced_); the positions are kept for the
+  // next check.
+  void measureMoves();
+  void keepPositions();  // the owned particles' positions, for the next check
+  // The checks of motion (every rank alike, `move` and `bounced` those of all ranks).
+  void checkMotion(double move, bool bounced);
   [[noreturn]] void reportInstability(Gid id, const std::string& what);
   void writeLogs();  // debug.txt (appended) and timing.out (rewritten); collective
   bool relaxLoadStep();
@@ -142,7 +152,22 @@ class Simulation {
   long step_ = 0;
   double slack_ = 0, setupDt_ = 0;
   bool timedOutputs_ = false, requestedNow_ = false;
-  std::vector<int> forceColumns_;  // the motion's force and moment columns (integ)
+  std::vector<int> forceColumns_;   // the motion's force and moment columns (integ)
+  std::vector<double> checkedPos_;  // owned particles' positions at the last check
+  long checkedStep_ = 0;
+  static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
+  std::size_t movedMost_ = 0;  // the owned particle that moved most since the last check
+  std::array<double, 3> mostStep_{};
+  double localMove_ = 0, localMost_ = 0;  // its move per step, and its square
+  bool bounced_ = false;
+  std::size_t tracked_ = kNone;  // the fastest particle of the last check, if owned here
+  std::array<double, 3> trackedStep_{};
+  double trackedMove_ = 0;  // the square of its move then
+  double lastMove_ = 0;     // the last check's largest move per step (all ranks)
+  double growthFrom_ = 0;   // that move before the present run of growing checks
+  int growing_ = 0;         // checks in a row at which the fastest particle bounced
+  static constexpr double kGrowth = 1.5;
+  static constexpr int kGrowthSteps = 3;
   std::function<int()> stopCheck_;
   int stopCode_ = 0;
   bool setUp_ = false, ended_ = false, resumed_ = false;

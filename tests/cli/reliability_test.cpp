@@ -199,33 +199,109 @@ TEST(Reliability, MaxWallTimeStopsBeforeTheLimitWithACheckpoint) {
   EXPECT_THAT(bad.err, HasSubstr("--max-wall-time: '1h30' is not a duration"));
 }
 
-TEST(Reliability, InstabilityStopsInItsStepBeforeAnyRestartFileHoldsIt) {
+namespace {
+
+// Runs an unstable variant of the spring lattice, with a restart file and a checkpoint
+// every step, on `ranks`; expects it to end with exit code 3 and one message matching
+// `pattern` (its first group the step), no restart file or checkpoint of that step and
+// the previous step's as the newest, and no output holding a non-finite number. Returns
+// the standard error.
+std::string expectUnstable(const std::string& name, int ranks,
+                           const std::vector<std::pair<std::string, std::string>>& edits,
+                           const std::string& pattern, const std::string& extra = "") {
+  const std::string dir = freshDir(name + "_np" + std::to_string(ranks));
+  const std::string sc = springCase(dir, 3000, extra);
+  edit(sc, "restart_every = 10", "restart_every = 1\ncheckpoint_every = 1\ncheckpoints_kept = 3");
+  for (const auto& [from, to] : edits) edit(sc, from, to);
+  const auto r = runPdq({"run", sc, "-q"}, dir, ranks);
+  EXPECT_EQ(r.code, 3) << r.all();
+  EXPECT_EQ(occurrences(r.err, "pdq: error"), 1) << r.err;
+  std::smatch m;
+  if (!std::regex_search(r.err, m, std::regex("error: step (\\d+): " + pattern))) {
+    ADD_FAILURE() << r.err;
+    return r.err;
+  }
+  const long at = std::stol(m[1]);
+  EXPECT_THAT(r.err, HasSubstr("the run is unstable: lower the time step (dt = "));
+  const std::string out = dir + "/out/";
+  if (at > 1) {
+    EXPECT_TRUE(fs::exists(out + "ParticleAlterAttrs." + std::to_string(at - 1) + ".rst"));
+    char ckpt[64];
+    std::snprintf(ckpt, sizeof ckpt, "checkpoint.%012ld.ckpt", at - 1);
+    EXPECT_TRUE(fs::exists(out + ckpt)) << ckpt;
+  }
+  for (const auto& f : filesUnder(out)) {
+    std::smatch s;
+    const std::regex stepOf(
+        R"((?:ParticleAlterAttrs|Bonds|State)\.(\d+)\.rst|checkpoint\.(\d+)\.ckpt)");
+    if (std::regex_match(f, s, stepOf)) {
+      EXPECT_LT(std::stol(s[1].matched ? s[1].str() : s[2].str()), at) << f << " written";
+    }
+    const std::string text = readFile(out + f);
+    EXPECT_EQ(text.find("nan"), std::string::npos) << f;
+    EXPECT_EQ(text.find("inf"), std::string::npos) << f;
+  }
+  return r.err;
+}
+
+}  // namespace
+
+TEST(Reliability, NonFiniteValuesStopTheRunInTheirStep) {
+  // Unbreakable springs so stiff, and masses so light, that the first stretch gives an
+  // infinite acceleration.
   for (int ranks : {0, 2}) {
     SCOPED_TRACE(ranks);
-    // Unbreakable springs stepped at 60 times their stable step: the motion grows until
-    // it overflows. A restart file every step: the unstable one must not be written.
-    const std::string dir = freshDir("unstable_np" + std::to_string(ranks));
-    const std::string sc = springCase(dir, 3000);
-    edit(sc, "dt = 0.05", "dt = 3");
-    edit(sc, "critical_stretch = 0.02", "critical_stretch = 0");
-    edit(sc, "restart_every = 10", "restart_every = 1");
-    const auto r = runPdq({"run", sc, "-q"}, dir, ranks);
-    EXPECT_EQ(r.code, 3) << r.all();
-    std::smatch m;
-    ASSERT_TRUE(std::regex_search(r.err, m, std::regex(R"(error: step (\d+): particle 0 at \()")))
-        << r.err;
-    const long at = std::stol(m[1]);
-    EXPECT_THAT(r.err, HasSubstr("has non-finite x y z vx vy vz fx fy fz"));
-    EXPECT_THAT(r.err, HasSubstr("lower the time step (dt = 3)"));
-    EXPECT_EQ(r.err.find("pdq: error"), r.err.rfind("pdq: error")) << "printed once: " << r.err;
-    EXPECT_TRUE(fs::exists(dir + "/out/ParticleAlterAttrs." + std::to_string(at - 1) + ".rst"));
-    EXPECT_FALSE(fs::exists(dir + "/out/ParticleAlterAttrs." + std::to_string(at) + ".rst"));
-    for (const auto& f : filesUnder(dir + "/out")) {
-      const std::string text = readFile(dir + "/out/" + f);
-      EXPECT_EQ(text.find("nan"), std::string::npos) << f;
-      EXPECT_EQ(text.find("inf"), std::string::npos) << f;
-    }
+    const std::string err = expectUnstable(
+        "nonfinite", ranks,
+        {{"critical_stretch = 0.02", "critical_stretch = 0\nstiffness = 1e300\nmass = 1e-300"}},
+        R"(particle \d+ at \(inf, inf, 0\) has non-finite x y vx vy)");
+    EXPECT_THAT(err, HasSubstr("lower the time step (dt = 0.05)"));
   }
+}
+
+TEST(Reliability, MotionGrowingStepByStepStopsTheRun) {
+  // Unbreakable springs stepped a little above their stable step (about 0.75): the fastest
+  // particle goes back and forth, further each step, and is stopped before it moves
+  // further than the skin (cells of 5 here).
+  for (int ranks : {0, 2}) {
+    SCOPED_TRACE(ranks);
+    const std::string err = expectUnstable(
+        "growing", ranks,
+        {{"dt = 0.05", "dt = 0.8"},
+         {"critical_stretch = 0.02", "critical_stretch = 0"},
+         {"min_cell_size = 1.5", "min_cell_size = 5"}},
+        R"(particle \d+ at \([-0-9.e]+, [-0-9.e]+, 0\) moved [0-9.e+-]+ in the last step: the fastest particle has gone back and forth at every step since step \d+)");
+    EXPECT_THAT(err, HasSubstr("so the motion grows without bound"));
+    EXPECT_THAT(err, Not(HasSubstr("non-finite")));
+  }
+}
+
+TEST(Reliability, ParticleMovingMoreThanTheSkinInAStepStopsTheRun) {
+  // Particle 77 (at X = 13) given a speed that takes it 2.5 in one step; cells are 1.5.
+  for (int ranks : {0, 2}) {
+    SCOPED_TRACE(ranks);
+    const std::string err = expectUnstable(
+        "skin", ranks, {},
+        R"(particle 77 at \(15.5, 4\.0\d+, 0\) moved 2.5 in one step, more than the skin \(one cell, 1.5\))",
+        "\n[[particles.set]]\nattribute = \"vx\"\nvalue = 50\nids = [77]\n");
+  }
+}
+
+TEST(Reliability, MplmUnstableStepIsStoppedNamingItsStableStep) {
+  // The plate at 1.6 times its stable step: stopped within a few steps of the start, with
+  // the stable step in the hint.
+  const std::string dir = freshDir("mplm_unstable");
+  const std::string sc = dir + "/tension.toml";
+  writeFile(sc, readFile(sourceDir() + "/examples/mplm/tension_x.toml"));
+  edit(sc, "dt = 1.808e-7", "dt = 6e-6");
+  const auto r = runPdq({"run", sc, "-q", "--steps", "200"}, dir, 2);
+  EXPECT_EQ(r.code, 3) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("so the motion grows without bound"));
+  EXPECT_THAT(r.err,
+              HasSubstr("lower the time step (dt = 6e-06; the model's stable step is 3.672"));
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.err, m, std::regex(R"(error: step (\d+): particle)"))) << r.err;
+  EXPECT_LT(std::stol(m[1]), 20);
 }
 
 TEST(Reliability, MplmWarnsOnStandardErrorWhenDtExceedsItsStableStep) {
@@ -240,6 +316,22 @@ TEST(Reliability, MplmWarnsOnStandardErrorWhenDtExceedsItsStableStep) {
   EXPECT_EQ(r.code, 0) << r.all();
   EXPECT_THAT(r.err, HasSubstr("pdq: warning: mplm2d: dt = 1e-05 s exceeds the stable time step "
                                "3.672e-06 s"));
+}
+
+TEST(Reliability, Mplm3dWarnsOnStandardErrorWhenDtExceedsItsStableStep) {
+  const std::string dir = freshDir("mplm3d_dt");
+  const std::string sc = dir + "/cantilever.toml";
+  writeFile(sc, readFile(sourceDir() + "/examples/mplm/cantilever3d.toml"));
+  edit(sc, "length = 2.0", "length = 0.4");  // a short member: a quick set-up
+  edit(sc, "depth = 0.35", "depth = 0.15");
+  const auto fine = runPdq({"run", sc, "-q", "--steps", "2"}, dir);
+  EXPECT_EQ(fine.code, 0) << fine.all();
+  EXPECT_EQ(fine.err, "");
+  edit(sc, "name = \"mplm3d\"", "name = \"mplm3d\"\ndt = 1e-4");
+  const auto r = runPdq({"run", sc, "-q", "--steps", "2", "--out", "fast"}, dir);
+  EXPECT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.err,
+              HasSubstr("pdq: warning: mplm3d: dt = 0.0001 s exceeds the stable time step "));
 }
 
 TEST(Reliability, RestartFilesAreReadStrictly) {

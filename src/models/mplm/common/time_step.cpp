@@ -7,6 +7,7 @@ namespace pdq::mplm {
 
 void reportTimeStep(Context& ctx, const char* model, double omegaMax, double stable,
                     double thesisDt) {
+  ctx.setStableDt(stable);
   if (ctx.root())
     ctx.log() << std::setprecision(4) << model << ": highest frequency " << omegaMax
               << " rad/s, stable dt " << stable << " s, s/(pi c0) = " << thesisDt << " s, using dt "

@@ -4,8 +4,9 @@
 
 namespace pdq::mplm {
 
-// Logs the frequency and the steps, and warns (on standard error through the pdq command)
-// when the time step in use exceeds the stable one.
+// Logs the frequency and the steps, tells the engine the stable step (named in its
+// instability messages), and warns (on standard error through the pdq command) when the
+// time step in use exceeds the stable one.
 void reportTimeStep(Context& ctx, const char* model, double omegaMax, double stable,
                     double thesisDt);
 
