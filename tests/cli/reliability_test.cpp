@@ -499,3 +499,20 @@ restart_every = 2
                 .code,
             0);
 }
+
+TEST(Reliability, RankThrowingAloneInTheTimeLoopEndsTheJobNamingIt) {
+  // Particle 15 (X = 15, on rank 2 of 3 along X) flies out of the domain; only its rank
+  // sees it (when it migrates), the others wait for it in the shuffle's exchange.
+  const std::string dir = freshDir("rank_throws_alone");
+  const std::string sc =
+      springCase(dir, 100000, "\n[[particles.set]]\nattribute = \"vx\"\nvalue = 10\nids = [15]\n");
+  edit(sc, "horizon = 1.5", "horizon = 1.5\nshuffle = true");
+  edit(sc, "min_cell_size = 1.5", "min_cell_size = 1.5\nprocs = [3, 1, 1]");
+  const auto started = std::chrono::steady_clock::now();
+  const auto r = runPdq({"run", sc, "-q"}, dir, 3);
+  EXPECT_LT(secondsSince(started), 10);
+  EXPECT_EQ(r.code, 3) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("pdq: error: rank 2: step "));
+  EXPECT_THAT(r.err, HasSubstr(": particle 15 left the domain along X"));
+  EXPECT_EQ(occurrences(r.err, "pdq: error:"), 1) << r.err;
+}
