@@ -516,3 +516,18 @@ TEST(Reliability, RankThrowingAloneInTheTimeLoopEndsTheJobNamingIt) {
   EXPECT_THAT(r.err, HasSubstr(": particle 15 left the domain along X"));
   EXPECT_EQ(occurrences(r.err, "pdq: error:"), 1) << r.err;
 }
+
+TEST(Reliability, InputErrorSeenByOneRankIsReportedOnce) {
+  // A particle without volume: only the rank that owns it finds it, in the model's set-up.
+  const std::string dir = freshDir("one_rank_input_error");
+  const std::string sc = dir + "/plate.toml";
+  writeFile(sc, readFile(sourceDir() + "/examples/pmb/notched_plate.toml") +
+                    "\n[[particles.set]]\nattribute = \"volume\"\nvalue = 0\nids = [5]\n");
+  const auto started = std::chrono::steady_clock::now();
+  const auto r = runPdq({"run", sc, "-q", "--steps", "2"}, dir, 3);
+  EXPECT_LT(secondsSince(started), 10);
+  EXPECT_EQ(r.code, 1) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("particle 5 has volume 0; every particle needs a positive volume"));
+  EXPECT_THAT(r.err, HasSubstr("plate.toml:"));
+  EXPECT_EQ(occurrences(r.err, "pdq: error:"), 1) << r.err;
+}
