@@ -304,18 +304,29 @@ TEST(Reliability, MplmUnstableStepIsStoppedNamingItsStableStep) {
   EXPECT_LT(std::stol(m[1]), 20);
 }
 
+namespace {
+
+// Runs the scenario `sc` (in `dir`) two steps as it is, with no warning, then with the
+// edit `dt` (a time step above the stable one), expecting `warning` on standard error.
+void expectDtWarning(const std::string& dir, const std::string& sc,
+                     const std::pair<std::string, std::string>& dt, const std::string& warning) {
+  const auto fine = runPdq({"run", sc, "-q", "--steps", "2"}, dir);
+  EXPECT_EQ(fine.code, 0) << fine.all();
+  EXPECT_EQ(fine.err, "");
+  edit(sc, dt.first, dt.second);
+  const auto r = runPdq({"run", sc, "-q", "--steps", "2", "--out", "fast"}, dir);
+  EXPECT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.err, HasSubstr(warning));
+}
+
+}  // namespace
+
 TEST(Reliability, MplmWarnsOnStandardErrorWhenDtExceedsItsStableStep) {
   const std::string dir = freshDir("mplm_dt");
   const std::string sc = dir + "/tension.toml";
   writeFile(sc, readFile(sourceDir() + "/examples/mplm/tension_x.toml"));
-  const auto fine = runPdq({"run", sc, "-q", "--steps", "2"}, dir);
-  EXPECT_EQ(fine.code, 0) << fine.all();
-  EXPECT_EQ(fine.err, "");
-  edit(sc, "dt = 1.808e-7", "dt = 1e-5");
-  const auto r = runPdq({"run", sc, "-q", "--steps", "2", "--out", "fast"}, dir);
-  EXPECT_EQ(r.code, 0) << r.all();
-  EXPECT_THAT(r.err, HasSubstr("pdq: warning: mplm2d: dt = 1e-05 s exceeds the stable time step "
-                               "3.672e-06 s"));
+  expectDtWarning(dir, sc, {"dt = 1.808e-7", "dt = 1e-5"},
+                  "pdq: warning: mplm2d: dt = 1e-05 s exceeds the stable time step 3.672e-06 s");
 }
 
 TEST(Reliability, Mplm3dWarnsOnStandardErrorWhenDtExceedsItsStableStep) {
@@ -324,14 +335,8 @@ TEST(Reliability, Mplm3dWarnsOnStandardErrorWhenDtExceedsItsStableStep) {
   writeFile(sc, readFile(sourceDir() + "/examples/mplm/cantilever3d.toml"));
   edit(sc, "length = 2.0", "length = 0.4");  // a short member: a quick set-up
   edit(sc, "depth = 0.35", "depth = 0.15");
-  const auto fine = runPdq({"run", sc, "-q", "--steps", "2"}, dir);
-  EXPECT_EQ(fine.code, 0) << fine.all();
-  EXPECT_EQ(fine.err, "");
-  edit(sc, "name = \"mplm3d\"", "name = \"mplm3d\"\ndt = 1e-4");
-  const auto r = runPdq({"run", sc, "-q", "--steps", "2", "--out", "fast"}, dir);
-  EXPECT_EQ(r.code, 0) << r.all();
-  EXPECT_THAT(r.err,
-              HasSubstr("pdq: warning: mplm3d: dt = 0.0001 s exceeds the stable time step "));
+  expectDtWarning(dir, sc, {"name = \"mplm3d\"", "name = \"mplm3d\"\ndt = 1e-4"},
+                  "pdq: warning: mplm3d: dt = 0.0001 s exceeds the stable time step ");
 }
 
 TEST(Reliability, RestartFilesAreReadStrictly) {
