@@ -1,11 +1,15 @@
 #include "cli/watchdog.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstring>
 #include <string>
 
 #include "cli/guard.hpp"
+#include "engine/process_state.hpp"
 
 namespace pdq::cli {
 
@@ -21,6 +25,19 @@ Watchdog::Watchdog(double timeout, bool threadMultiple) : timeout_(timeout) {
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   if (size_ == 1 || timeout_ <= 0 || !threadMultiple) return;
   MPI_Comm_dup(MPI_COMM_WORLD, &beats_);
+  // Each rank tells the next one its machine and process id.
+  struct Whereabouts {
+    char host[MPI_MAX_PROCESSOR_NAME] = {};
+    int pid = 0;
+  } mine, previous;
+  int length = 0;
+  MPI_Get_processor_name(mine.host, &length);
+  mine.pid = static_cast<int>(getpid());
+  const int next = (rank_ + 1) % size_, before = (rank_ + size_ - 1) % size_;
+  MPI_Sendrecv(&mine, sizeof mine, MPI_BYTE, next, 1, &previous, sizeof previous, MPI_BYTE, before,
+               1, beats_, MPI_STATUS_IGNORE);
+  previousPid_ = previous.pid;
+  previousSameHost_ = std::strncmp(mine.host, previous.host, sizeof mine.host) == 0;
   thread_ = std::thread([this] { watch(); });
 }
 
@@ -37,6 +54,7 @@ void Watchdog::watch() {
   const double period = std::min(0.5, timeout_ / 5);
   auto heard = Clock::now(), looked = heard, beaten = Clock::now() - std::chrono::hours(1);
   MPI_Request allDone = MPI_REQUEST_NULL;
+  bool warned = false;  // of this silence
   while (true) {
     if (allDone == MPI_REQUEST_NULL && finishing_) MPI_Ibarrier(beats_, &allDone);
     if (allDone != MPI_REQUEST_NULL) {
@@ -61,12 +79,31 @@ void Watchdog::watch() {
       }
     }
     if (const double silent = since(heard); silent > timeout_) {
+      const ProcessState state =
+          previousSameHost_ ? processState(previousPid_) : ProcessState::Unknown;
       char seconds[32];
       std::snprintf(seconds, sizeof seconds, "%.1f", silent);
-      printError("rank " + std::to_string(previous) + " has given no sign of life for " + seconds +
-                 " s: it is stopped (SIGSTOP, a debugger) or its node is lost; rank " +
-                 std::to_string(rank_) + " ends the job (--watchdog sets the time)");
-      MPI_Abort(MPI_COMM_WORLD, RunFailed);
+      const std::string quiet =
+          "rank " + std::to_string(previous) + " has given no sign of life for " + seconds + " s";
+      if (state == ProcessState::Alive) {
+        if (!warned) {
+          std::fprintf(stderr,
+                       "pdq: warning: %s, but its process is alive: the machine is overloaded; "
+                       "waiting for it\n",
+                       quiet.c_str());
+          warned = true;
+        }
+      } else {
+        const char* cause = state == ProcessState::Stopped ? "it is stopped (SIGSTOP, a debugger)"
+                            : state == ProcessState::Gone
+                                ? "its process has ended"
+                                : "it is stopped (SIGSTOP, a debugger) or its node is lost";
+        printError(quiet + ": " + cause + "; rank " + std::to_string(rank_) +
+                   " ends the job (--watchdog sets the time)");
+        MPI_Abort(MPI_COMM_WORLD, RunFailed);
+      }
+    } else if (silent < period) {
+      warned = false;
     }
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
