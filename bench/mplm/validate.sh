@@ -1,11 +1,17 @@
 #!/usr/bin/env bash
 # make validate: the strength table of thesis §4.4. Every 2D example — the scenario files
-# examples/mplm/*.toml, as they are — through `pdq strength` (two trials side by side on
-# two ranks), printed as a Markdown table: the thesis's MPLM strength, the ACI 318 /
-# classical value, pdq's bracket, pdq / thesis and the failure mode. The lowest failing
-# trial of each is drawn by `pdq post picture` into docs/mplm/<example>.png: the damage at
-# failure. Reports and logs stay in the work folder printed at the end.
-# Usage: bench/mplm/validate.sh [build-dir] [ranks] [examples...]   (~25 minutes on 2 cores)
+# examples/mplm/*.toml, as they are — through `pdq strength` twice, side by side: the
+# quasi-static method (one run of dynamic relaxation under force control) and the dynamic
+# bisection (two trials at a time), each on the same ranks, with their wall and CPU times.
+# Printed as a Markdown table: the thesis's MPLM strength, the ACI 318 / classical value,
+# pdq's quasi-static and dynamic brackets, quasi-static / thesis, the failure mode (of the
+# dynamic failing trial when it ran, else of the quasi-static peak) and the times. The
+# dynamic bisection's lowest failing trial of each is drawn by `pdq post picture` into
+# docs/mplm/<example>.png: the damage at failure. Reports and logs stay in the work folder
+# printed at the end.
+# Usage: bench/mplm/validate.sh [build-dir] [ranks] [examples...]
+#   METHODS="quasi_static bisection" (default) or either one alone (the other's columns say
+#   "not run"). ~25 minutes for the bisection on 2 cores, a few for the quasi-static runs.
 # The 3D members are not in the default list (hours each, docs/mplm3d.md): name them,
 #   bench/mplm/validate.sh build 2 cantilever3d rc_cantilever3d rc_beam3d
 set -euo pipefail
@@ -14,31 +20,57 @@ ranks=${2:-2}
 examples=("${@:3}")
 [ ${#examples[@]} -gt 0 ] || examples=(tension_x tension_y compression_x compression_y plain_beam
   rc_beam rc_beam_stirrups rc_beam_shear deep_beam)
+methods=${METHODS:-quasi_static bisection}
 src=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 mkdir -p "$src/docs/mplm"
 cd "$work"
 field() { sed -n "s/^$1: //p" "$rep"; }  # a "key: value" line of the current report
-echo "| example | thesis MPLM | ACI 318 / classical | pdq | pdq / thesis | failure mode |"
-echo "| --- | --- | --- | --- | --- | --- |"
+TIMEFORMAT='%R %U %S'                      # wall, user and system seconds of `time`
+# pdq strength of example $1 by method $2 in folder $2/; sets bracket, mode, times, rep.
+strength() {
+  local e=$1 m=$2 t
+  mkdir -p "$m"
+  bracket="not run" mode="" times="-" rep=/dev/null
+  case " $methods " in *" $m "*) ;; *) return 0 ;; esac
+  if ! t=$( { time (cd "$m" && OMP_NUM_THREADS=1 mpirun --oversubscribe --allow-run-as-root \
+    -np "$ranks" "$build/pdq" strength "$src/examples/mplm/$e.toml" --set "method=$m" \
+    >"$e.log" 2>&1); } 2>&1); then
+    bracket="failed: see $work/$m/$e.log"
+    return 0
+  fi
+  times=$(echo "$t" | awk '{printf "%.0f s (CPU %.0f s)", $1, $2 + $3}')
+  rep=$m/${e}_out/strength/strength.txt
+  bracket=$(field strength | sed -E 's/^([^ ]+) to ([^ ]+) ([^ ]+) .*/\1–\2 \3/')
+  [ -n "$bracket" ] || bracket="not found ($(grep -m1 -E '^(in equilibrium|no failure|fails at)' "$rep"))"
+  mode=$(field "failure mode")
+}
+echo "| example | thesis MPLM | ACI 318 / classical | pdq quasi-static | quasi-static / thesis |" \
+  "pdq dynamic | failure mode | quasi-static time | dynamic time |"
+echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for e in "${examples[@]}"; do
   sc=$src/examples/mplm/$e.toml
-  OMP_NUM_THREADS=1 mpirun --oversubscribe --allow-run-as-root -np "$ranks" "$build/pdq" \
-    strength "$sc" >"$e.log" 2>&1 || { echo "| $e | pdq strength failed: see $work/$e.log |"; continue; }
-  rep=${e}_out/strength/strength.txt
-  bracket=$(field strength | sed -E 's/^([^ ]+) to ([^ ]+) ([^ ]+) .*/\1–\2 \3/')
-  [ -n "$bracket" ] || bracket="not found ($(tail -1 "$e.log"))"
+  strength "$e" quasi_static
+  qs=$bracket qsTime=$times qsMode=$mode
   aci=$(field "ACI 318"; field classical)
   ref=$(field reference | sed -E 's/ \(.*//')
   ratio=$(field reference | sed -nE 's/.*= ([0-9.]+)\)$/\1/p')
-  echo "| $e | $ref | $aci | $bracket | ${ratio:--} | $(field "failure mode") |"
-  restart=$(field "failing trial" | sed -nE 's/.*--restart ([^ )]+)\)$/\1/p')
-  if [ -n "$restart" ]; then
-    load=$(field strength | sed -E 's/^[^ ]+ to ([^ ]+ [^ ]+) .*/\1/')
-    "$build/pdq" post picture "$sc" --restart "$restart" -o "$src/docs/mplm/$e.png" \
-      --set "title=$e: damage in the lowest failing trial, $load" >>"$e.log" 2>&1 ||
-      echo "(picture of $e failed: see $work/$e.log)"
+  strength "$e" bisection
+  dyn=$bracket dynTime=$times
+  [ -n "$mode" ] || mode=$qsMode
+  if [ "$rep" != /dev/null ]; then
+    [ -n "$aci" ] || aci=$(field "ACI 318"; field classical)
+    [ -n "$ref" ] || ref=$(field reference | sed -E 's/ \(.*//')
+    restart=$(field "failing trial" | sed -nE 's/.*--restart ([^ )]+)\)$/\1/p')
+    if [ -n "$restart" ]; then
+      load=$(field strength | sed -E 's/^[^ ]+ to ([^ ]+ [^ ]+) .*/\1/')
+      (cd bisection && "$build/pdq" post picture "$sc" --restart "$restart" \
+        -o "$src/docs/mplm/$e.png" \
+        --set "title=$e: damage in the lowest failing trial, $load" >>"$e.log" 2>&1) ||
+        echo "(picture of $e failed: see $work/bisection/$e.log)"
+    fi
   fi
+  echo "| $e | $ref | $aci | $qs | ${ratio:--} | $dyn | $mode | $qsTime | $dynTime |"
 done
 echo
-echo "reports: $work/*_out/strength/strength.txt; pictures: $src/docs/mplm/"
+echo "reports: $work/{quasi_static,bisection}/*_out/strength/strength.txt; pictures: $src/docs/mplm/"

@@ -149,6 +149,8 @@ class Integrator {
   // State kept between steps, saved in restart files.
   std::vector<double> state() const;
   void setState(std::span<const double> s);
+  // Quasi-static: the relaxation iterations of the run so far, converged or not.
+  double relaxationIterations() const { return iterations_; }
 
   // Quasi-static: where the load path stands, in units of the largest increment
   // (1/load_steps of load_scale): the last converged load step's `progress`, the next
@@ -166,6 +168,7 @@ class Integrator {
   // names the run's input in errors.
   struct Relaxed {
     bool converged = true;
+    bool runaway = false;  // not converged: the motion ran away from the last equilibrium
     long iterations = 0;
     double residual = 0, reference = 0;  // out-of-balance and applied (or reaction) norms
     // The curve: |factor × loads| and the work-conjugate displacement; under displacement

@@ -32,6 +32,13 @@ constexpr double kSafety = 1.5;
 constexpr int kPowerIterations = 100;
 // The finite-difference probe moves no DOF more than this fraction of the horizon (or rad).
 constexpr double kProbe = 1e-7;
+// Under force control a load step has no equilibrium near the last one when its displacement
+// along the loads exceeds kRunaway times the last equilibrium's (looked at every
+// kRunawayEvery iterations), or when it stalls: looked at after kFirstLook iterations and
+// each doubling of them, the residual did not halve while the structure kept moving.
+constexpr double kRunaway = 10;
+constexpr long kRunawayEvery = 10;
+constexpr long kFirstLook = 500;
 }  // namespace
 
 double Integrator::dofForce(const Particles& P, std::size_t i, int d, double factor) const {
@@ -131,6 +138,27 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       ctx.log() << "quasi-static: highest frequency " << std::sqrt(omega2_)
                 << " rad/s of the free degrees of freedom\n";
   }
+  // The applied load (the sum of the loads' magnitudes) and the displacement along it
+  // (u·P / Σ|P|: for loads all in one direction their load-weighted mean displacement).
+  const double loadTotal = ctx.sumOwned([&](std::size_t i) {
+    double a = 0;
+    for (int d = 0; d < nd; ++d) a += std::fabs(bodies_[i].load[d]);
+    return a;
+  });
+  auto alongLoads = [&] {
+    const double work = ctx.sumOwned([&](std::size_t i) {
+      double b = 0;
+      for (int d = 0; d < nd; ++d) b += bodies_[i].load[d] * displacement(P, i, d);
+      return b;
+    });
+    return loadTotal > 0 ? work / loadTotal : 0.0;
+  };
+  // Under force control, the last equilibrium's displacement along the loads: a load step
+  // whose fictitious motion runs away from it, or stalls while still moving, has no
+  // equilibrium near it (the structure is past its peak) and is stopped then instead of
+  // after max_iterations.
+  const double lastAlong = control.active() ? 0.0 : alongLoads();
+
   // Prescribed values of this load step (a spatial rotation turns by its increment).
   for (std::size_t i = 0; i < n; ++i) {
     const Body& b = bodies_[i];
@@ -168,6 +196,8 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   Bonds::Saved committed;
   ctx.bonds.save(committed);
   Relaxed out;
+  long lookAt = kFirstLook;  // the next look for a stalled relaxation, and the last one's
+  double lookResidual = 0, lookAlong = 0;
   const long nOwned = static_cast<long>(n);
   for (long it = 0;; ++it) {
     if (it > 0) ctx.bonds.restore(committed);
@@ -207,6 +237,23 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     if (it >= solver.maxIterations) {
       out.converged = false;
       break;
+    }
+    if (!control.active() && it > 0 && it % kRunawayEvery == 0) {
+      const double along = alongLoads();
+      // Stalled: since the last look the residual has not halved while the structure kept
+      // moving along the loads (by over a tenth of its move before that look); not in a
+      // load step from the unloaded state, whose slowest modes may take long to start.
+      bool stalled = false;
+      if (it == lookAt) {
+        stalled = lookAt > kFirstLook && lastAlong != 0 && out.residual > 0.5 * lookResidual &&
+                  std::fabs(along - lookAlong) > 0.1 * std::fabs(lookAlong - lastAlong);
+        lookAt *= 2, lookResidual = out.residual, lookAlong = along;
+      }
+      if (stalled || (lastAlong != 0 && std::fabs(along) > kRunaway * std::fabs(lastAlong))) {
+        out.converged = false;
+        out.runaway = true;
+        break;
+      }
     }
     // Damping from the Rayleigh quotient of the local stiffness along the displacement.
     double c = 0;
@@ -253,23 +300,8 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     exchange();
   }
   iterations_ += static_cast<double>(out.iterations);
-  // The applied load (the sum of the loads' magnitudes) and the displacement along it
-  // (u·P / Σ|P|: for loads all in one direction their load-weighted mean displacement).
-  {
-    ExactSum sp, su;
-    for (std::size_t i = 0; i < n; ++i) {
-      double a = 0, b = 0;
-      for (int d = 0; d < nd; ++d) {
-        a += std::fabs(bodies_[i].load[d]);
-        b += bodies_[i].load[d] * displacement(P, i, d);
-      }
-      sp.add(a);
-      su.add(b);
-    }
-    const double total = ctx.sum(sp), work = ctx.sum(su);
-    out.load = factor * total;
-    out.displacement = total > 0 ? work / total : 0;
-  }
+  out.load = factor * loadTotal;
+  out.displacement = alongLoads();
   if (control.active()) {
     // The force the control exerts along its direction: minus the internal forces on the
     // controlled particles (the evaluation at which the load step converged).
