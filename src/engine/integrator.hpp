@@ -149,8 +149,6 @@ class Integrator {
   // State kept between steps, saved in restart files.
   std::vector<double> state() const;
   void setState(std::span<const double> s);
-  // Quasi-static: the relaxation iterations of the run so far, converged or not.
-  double relaxationIterations() const { return iterations_; }
 
   // Quasi-static: where the load path stands, in units of the largest increment
   // (1/load_steps of load_scale): the last converged load step's `progress`, the next

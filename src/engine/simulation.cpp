@@ -306,8 +306,8 @@ bool Simulation::relaxLoadStep() {
            << solver.maxBroken;
     else if (r.runaway)
       what << "has no equilibrium near the last: after " << r.iterations
-           << " iterations the structure was still moving along the loads (over 10 times as "
-              "far as at the last equilibrium, or with a residual no longer falling)";
+           << " iterations the structure was still moving along the loads, ever "
+              "further from the last equilibrium or with a residual no longer falling";
     else
       what << "did not converge in " << solver.maxIterations
            << " iterations: the out-of-balance force is still " << relative
@@ -330,7 +330,6 @@ bool Simulation::relaxLoadStep() {
                            "; raise max_iterations or use more load_steps (or the "
                            "structure is a mechanism: check its supports)");
     last_.beyond = factor;
-    last_.allIterations = integrator_->relaxationIterations();
     ctx_->setStaticFactor(previous);
     forces();  // the last equilibrium's forces again (its damage is already committed)
     std::ostringstream reason;
@@ -347,15 +346,7 @@ bool Simulation::relaxLoadStep() {
     return endStep(false);
   }
   const double relative = r.reference > 0 ? r.residual / r.reference : 0.0;
-  last_ = {path.progress / full,
-           factor,
-           r.load,
-           r.displacement,
-           relative,
-           r.iterations,
-           broken,
-           0,
-           integrator_->relaxationIterations()};
+  last_ = {path.progress / full, factor, r.load, r.displacement, relative, r.iterations, broken};
   if (comm_.root()) {
     ctx_->log() << "load step " << step_ << ": load factor " << factor << ", " << r.iterations
                 << " iterations, residual " << r.residual << " (" << relative

@@ -108,8 +108,7 @@ class Simulation {
   struct LoadStep {
     double fraction = 0, factor = 0, load = 0, displacement = 0, relative = 0;
     long iterations = 0, broken = 0;
-    double beyond = 0;         // the smallest load factor tried beyond it that found no equilibrium
-    double allIterations = 0;  // of every relaxation of the run, converged or not
+    double beyond = 0;  // the smallest load factor tried beyond it that found no equilibrium
   };
   const LoadStep& lastLoadStep() const { return last_; }
 
