@@ -551,14 +551,6 @@ void Simulation::checkMotion(double move, bool bounced) {
     return static_cast<Gid>(
         comm_.max(mine ? static_cast<double>(particles_.gid(movedMost_)) : none));
   };
-  const double skin = dec_->minActiveCellSize();
-  if (!model_->shuffles() && move > skin) {
-    // No neighbour is lost (bonds hold their partners), but no stable run moves a
-    // particle across a cell in one step.
-    std::ostringstream os;
-    os << "moved " << move << " in one step, more than the skin (one cell, " << skin << ")";
-    reportInstability(mover(), os.str());
-  }
   // A time step above the stable one shows in the fastest particle: the highest mode's
   // amplitude multiplies each step and, its frequency being above the step's Nyquist
   // limit, the particle goes back and forth from step to step. Physical motion, resolved
