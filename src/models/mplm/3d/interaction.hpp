@@ -75,14 +75,15 @@ inline Chord smallChord(const Interaction& k, const Vec& d, const Vec& thi, cons
   referenceFrame(k.n0, e2, e3);
   const Vec bi{thi[0] - phi[0] * k.invL0, thi[1] - phi[1] * k.invL0, thi[2] - phi[2] * k.invL0};
   const Vec bj{thj[0] - phi[0] * k.invL0, thj[1] - phi[1] * k.invL0, thj[2] - phi[2] * k.invL0};
-  return {dot(d, k.n0),
-          k.invL0,
-          {dot(bi, k.n0), dot(bi, e2), dot(bi, e3)},
-          {dot(bj, k.n0), dot(bj, e2), dot(bj, e3)},
-          e2,
-          e3,
-          {},
-          false};
+  Chord c;  // its frame belongs to the co-rotational form: left unset, not zeroed each time
+  c.da = dot(d, k.n0);
+  c.invL = k.invL0;
+  c.ti = {dot(bi, k.n0), dot(bi, e2), dot(bi, e3)};
+  c.tj = {dot(bj, k.n0), dot(bj, e2), dot(bj, e3)};
+  c.e2 = e2;
+  c.e3 = e3;
+  c.rotated = false;
+  return c;
 }
 
 // Co-rotational (after Crisfield): the frame is the mean of the two end triads, turned by
