@@ -18,17 +18,26 @@ namespace pdq::mplm3d {
 
 using mplm::Kind;
 
-struct Interaction {
-  std::int32_t j = 0;        // partner's local index
-  std::uint32_t rev = 0;     // an owned partner's bond back to this particle
-  Vec r0{}, n0{};            // reference chord X_j − X_i and its direction
-  double L0 = 0, invL0 = 0;  // reference length d
-  double ka = 0;             // axial stiffness a/d (N/m)
-  double kb = 0;             // b/d: end moment M_i = kb (4θ̄_i + 2θ̄_j) in each bending plane
-  double kt = 0;             // c/d: torsional moment kt (θ̄x_j − θ̄x_i)
-  double c = 0, cr = 0;      // damping of relative velocity and angular velocity
-  double epsY = 0;           // bars: yield stretch F_y/E_s
+// The constants of an interaction; a lattice has few distinct sets, stored once each.
+struct Stiffness {
+  double ka = 0;         // axial stiffness a/d (N/m)
+  double kb = 0;         // b/d: end moment M_i = kb (4θ̄_i + 2θ̄_j) in each bending plane
+  double kt = 0;         // c/d: torsional moment kt (θ̄x_j − θ̄x_i)
+  double c = 0, cr = 0;  // damping of relative velocity and angular velocity
+  double epsY = 0;       // bars: yield stretch F_y/E_s
   Kind kind = Kind::Concrete;
+  auto operator<=>(const Stiffness&) const = default;
+};
+
+// The geometry of one interaction end: the reference direction n0 of the chord X_j − X_i
+// and the frame's second axis e2 (the third, e3 = n0 × e2, is formed when needed), its
+// length d, and where its constants and its partner are.
+struct Interaction {
+  std::int32_t j = 0;      // partner's local index
+  std::uint32_t rev = 0;   // an owned partner's bond back to this particle
+  std::uint32_t type = 0;  // its Stiffness in the model's table
+  Vec n0{}, e2{};
+  double L0 = 0, invL0 = 0;
 };
 
 // The reference frame (n0, e2, e3) of an interaction: e2 ⟂ n0 from the global axis along
@@ -43,6 +52,25 @@ inline void referenceFrame(const Vec& n0, Vec& e2, Vec& e3) {
   const double inv = 1 / std::sqrt(dot(e2, e2));
   e2 = {e2[0] * inv, e2[1] * inv, e2[2] * inv};
   e3 = cross(n0, e2);
+}
+
+// Sets the interaction's reference geometry from its chord r0: d, 1/d, n0, e2.
+inline void setReference(Interaction& k, const Vec& r0) {
+  k.L0 = std::sqrt(dot(r0, r0));
+  k.invL0 = 1 / k.L0;
+  k.n0 = {r0[0] * k.invL0, r0[1] * k.invL0, r0[2] * k.invL0};
+  Vec e3;
+  referenceFrame(k.n0, k.e2, e3);
+}
+
+// The interaction as its other end holds it (partner i): n0 and e2 negate exactly, and
+// e3 = n0 × e2 stays (referenceFrame).
+inline Interaction reversed(const Interaction& k, std::int32_t i) {
+  Interaction r = k;
+  r.j = i;
+  r.n0 = {-k.n0[0], -k.n0[1], -k.n0[2]};
+  r.e2 = {-k.e2[0], -k.e2[1], -k.e2[2]};
+  return r;
 }
 
 // What the co-rotational form needs beyond the end rotations to turn the element's end
@@ -71,8 +99,7 @@ struct Chord {
 // φ = n0 × (u_j − u_i)/d; the end rotations are the rotation vectors minus φ.
 inline Chord smallChord(const Interaction& k, const Vec& d, const Vec& thi, const Vec& thj) {
   const Vec phi = cross(k.n0, d);
-  Vec e2, e3;
-  referenceFrame(k.n0, e2, e3);
+  const Vec &e2 = k.e2, e3 = cross(k.n0, e2);
   const Vec bi{thi[0] - phi[0] * k.invL0, thi[1] - phi[1] * k.invL0, thi[2] - phi[2] * k.invL0};
   const Vec bj{thj[0] - phi[0] * k.invL0, thj[1] - phi[1] * k.invL0, thj[2] - phi[2] * k.invL0};
   Chord c;  // its frame belongs to the co-rotational form: left unset, not zeroed each time
@@ -103,8 +130,7 @@ inline Chord corotChord(const Interaction& k, const Vec& r, const Quat& qi, cons
   const Quat qb = mul(qs, qm);
   const Quat qbc = conj(qb);
   const Vec vi = logRot(mul(qbc, qi)), vj = logRot(mul(qbc, qj));
-  Vec e2, e3;
-  referenceFrame(k.n0, e2, e3);
+  const Vec &e2 = k.e2, e3 = cross(k.n0, e2);
   return {L - k.L0,
           invL,
           {dot(vi, k.n0), dot(vi, e2), dot(vi, e3)},
@@ -164,11 +190,12 @@ struct EndLoad {
 // stretch) in `state` when `update`; a null `state` gives the undamaged elastic interaction.
 // With `mj`, also the moment on j (whose force is −f and whose `keep` is the same), so that
 // one evaluation serves both ends.
-inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::DamageLaw& law,
-                            double* state, bool update, Vec* mj = nullptr) {
+inline EndLoad elasticForce(const Interaction& g, const Stiffness& k, const Chord& ch,
+                            const mplm::DamageLaw& law, double* state, bool update,
+                            Vec* mj = nullptr) {
   const Vec& ti = ch.ti;
   const Vec& tj = ch.tj;
-  const double epsA = ch.da * k.invL0;  // eq. 4.7
+  const double epsA = ch.da * g.invL0;  // eq. 4.7
   double axialKeep = 1, bendKeep = 1, stretch = ch.da;
   if (state && k.kind == Kind::Concrete) {
     // ε_mp± = ε_a ± β d ψ, ψ = √(ψx² + ψy² + ψz²) at the end where it is larger (eqs.
@@ -189,7 +216,7 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::D
   } else if (state && k.kind == Kind::Bar) {
     const double plastic = mplm::plasticStrain(epsA, state[2], k.epsY);
     if (update) state[2] = plastic;
-    stretch = ch.da - plastic * k.L0;
+    stretch = ch.da - plastic * g.L0;
   }
   const double N = k.ka * stretch * axialKeep;  // tension positive: pulls i toward j
   const double kb = k.kb * bendKeep;
@@ -203,8 +230,8 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::D
     // ∂U/∂t at each end: (−T, My_i, Mz_i) and (T, My_j, Mz_j).
     Vec gi, gj;
     for (int d = 0; d < 3; ++d) {
-      gi[d] = -T * k.n0[d] + Myi * e2[d] + Mzi * e3[d];
-      gj[d] = T * k.n0[d] + Myj * e2[d] + Mzj * e3[d];
+      gi[d] = -T * g.n0[d] + Myi * e2[d] + Mzi * e3[d];
+      gj[d] = T * g.n0[d] + Myj * e2[d] + Mzj * e3[d];
     }
     corotLoad(ch.frame, N, gi, gj, f, m, mj);
     return {f, m, axialKeep};
@@ -212,22 +239,22 @@ inline EndLoad elasticForce(const Interaction& k, const Chord& ch, const mplm::D
   // Local components on i: force (N, −(Mz_i+Mz_j)/L, (My_i+My_j)/L), moment (T, −My_i, −Mz_i).
   const double f2 = -(Mzi + Mzj) * ch.invL, f3 = (Myi + Myj) * ch.invL;
   for (int d = 0; d < 3; ++d) {
-    f[d] = N * k.n0[d] + f2 * e2[d] + f3 * e3[d];
-    m[d] = T * k.n0[d] - Myi * e2[d] - Mzi * e3[d];
+    f[d] = N * g.n0[d] + f2 * e2[d] + f3 * e3[d];
+    m[d] = T * g.n0[d] - Myi * e2[d] - Mzi * e3[d];
   }
   if (mj)
-    for (int d = 0; d < 3; ++d) (*mj)[d] = -T * k.n0[d] - Myj * e2[d] - Mzj * e3[d];
+    for (int d = 0; d < 3; ++d) (*mj)[d] = -T * g.n0[d] - Myj * e2[d] - Mzj * e3[d];
   return {f, m, axialKeep};
 }
 
 // The strain energy of the interaction at the damage and plastic stretch held in `state`
 // (null: undamaged), which it leaves alone: elasticForce at that state is minus its gradient
 // (in the small form with respect to the rotation vectors the chord was given).
-inline double elasticEnergy(const Interaction& k, const Chord& ch, const mplm::DamageLaw& law,
-                            const double* state) {
+inline double elasticEnergy(const Interaction& g, const Stiffness& k, const Chord& ch,
+                            const mplm::DamageLaw& law, const double* state) {
   const Vec& ti = ch.ti;
   const Vec& tj = ch.tj;
-  const mplm::Held h = mplm::held(k.kind, ch.da, k.L0, law, state);
+  const mplm::Held h = mplm::held(k.kind, ch.da, g.L0, law, state);
   // ½ N·stretch, ½ T (θ̄x_j − θ̄x_i) and ½ (M_i θ̄_i + M_j θ̄_j) in each bending plane.
   const double twist = tj[0] - ti[0];
   return 0.5 * k.ka * h.stretch * h.stretch * h.axialKeep +

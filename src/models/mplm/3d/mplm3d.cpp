@@ -10,6 +10,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
@@ -86,18 +87,25 @@ class Mplm3d final : public Model {
     if (ctx.bonds.count() > std::numeric_limits<std::uint32_t>::max())
       throw std::length_error("mplm3d: more than 2^32 interaction ends on one rank");
     inter_.resize(ctx.bonds.count());
+    types_.clear();
+    std::map<Stiffness, std::uint32_t> typeOf;
     const std::vector<double> surface = surfaceFactors(ctx);
     // Gershgorin bound of the largest eigenvalue of M⁻¹C, C the damping of eq. 4.21.
     double gamma = 0;
     for (std::size_t i = 0; i < n; ++i) {
       double gt = 0, gr = 0;
       for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
-        inter_[b] =
-            makeInteraction(P, i, static_cast<std::size_t>(ctx.bonds.partner(b)), surface[b]);
         const auto j = static_cast<std::size_t>(ctx.bonds.partner(b));
-        if (j < n) inter_[b].rev = static_cast<std::uint32_t>(reverse(ctx.bonds, j, P.gid(i)));
-        gt += 2 * inter_[b].c;
-        gr += 2 * inter_[b].cr;
+        Interaction& k = inter_[b];
+        k.j = static_cast<std::int32_t>(j);
+        setReference(k, chord0(P, i, j));
+        const Stiffness t = stiffness(P, i, j, k.L0, surface[b]);
+        const auto [it, added] = typeOf.try_emplace(t, static_cast<std::uint32_t>(types_.size()));
+        if (added) types_.push_back(t);
+        k.type = it->second;
+        if (j < n) k.rev = static_cast<std::uint32_t>(reverse(ctx.bonds, j, P.gid(i)));
+        gt += 2 * t.c;
+        gr += 2 * t.cr;
       }
       gamma = std::max({gamma, gt / in_.mass[i], gr / in_.inertia[i]});
     }
@@ -117,7 +125,7 @@ class Mplm3d final : public Model {
   // a ghost is evaluated alike by the two ranks that hold it (its constants are symmetric
   // in its ends and its reference chord negates exactly), so results do not depend on
   // ranks or threads. Each particle then sums its ends in bond order, with damping.
-  void force(Context& ctx) override {
+  [[gnu::flatten]] void force(Context& ctx) override {
     Particles& P = ctx.particles;
     Bonds& B = ctx.bonds;
     const long n = static_cast<long>(P.owned());
@@ -127,24 +135,25 @@ class Mplm3d final : public Model {
     for (long i = 0; i < n; ++i) {
       const Gid gi = P.gid(i);
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const auto j = static_cast<std::size_t>(B.partner(b));
+        const bool first = gi < B.partnerGid(b), ghost = j >= static_cast<std::size_t>(n);
+        if (!first && !ghost) continue;  // evaluated from j
         const Interaction& k = inter_[b];
-        const auto j = static_cast<std::size_t>(k.j);
+        const Stiffness& t = types_[k.type];
         Vec mj;
-        if (gi < B.partnerGid(b)) {
-          const EndLoad e = load(k, P.alter(i), P.alter(j), i, B.attr(b), true, &mj);
-          ends_[b] = e;
-          if (j < static_cast<std::size_t>(n)) {
+        if (first) {
+          const EndLoad e = load(P, k, i, B.attr(b), true, &mj);
+          const double c = e.keep * t.c, cr = e.keep * t.cr;
+          ends_[b] = {e.f, e.m, c, cr};
+          if (!ghost) {
             const std::size_t r = k.rev;
-            ends_[r] = {{-e.f[0], -e.f[1], -e.f[2]}, mj, e.keep};
+            ends_[r] = {{-e.f[0], -e.f[1], -e.f[2]}, mj, c, cr};
             std::copy_n(B.attr(b), N_BOND, B.attr(r));
           }
-        } else if (j >= static_cast<std::size_t>(n)) {
-          Interaction kj = k;  // as the ghost's owner holds it
-          kj.j = static_cast<std::int32_t>(i);
-          kj.r0 = {-k.r0[0], -k.r0[1], -k.r0[2]};
-          kj.n0 = {-k.n0[0], -k.n0[1], -k.n0[2]};
-          const EndLoad e = load(kj, P.alter(j), P.alter(i), j, B.attr(b), true, &mj);
-          ends_[b] = {{-e.f[0], -e.f[1], -e.f[2]}, mj, e.keep};
+        } else {
+          const Interaction kj = reversed(k, static_cast<std::int32_t>(i));  // as j's owner
+          const EndLoad e = load(P, kj, j, B.attr(b), true, &mj);
+          ends_[b] = {{-e.f[0], -e.f[1], -e.f[2]}, mj, e.keep * t.c, e.keep * t.cr};
         }
       }
     }
@@ -153,12 +162,11 @@ class Mplm3d final : public Model {
       const double* a = P.alter(i);
       Vec f{}, m{};
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const Interaction& k = inter_[b];
-        const double* aj = P.alter(k.j);
-        const EndLoad& e = ends_[b];
+        const double* aj = P.alter(B.partner(b));
+        const End& e = ends_[b];
         for (int d = 0; d < 3; ++d) {
-          f[d] += e.f[d] + e.keep * k.c * (aj[VX + d] - a[VX + d]);
-          m[d] += e.m[d] + e.keep * k.cr * (aj[WX + d] - a[WX + d]);
+          f[d] += e.f[d] + e.c * (aj[VX + d] - a[VX + d]);
+          m[d] += e.m[d] + e.cr * (aj[WX + d] - a[WX + d]);
         }
       }
       double* F = P.integ(i);
@@ -341,17 +349,18 @@ class Mplm3d final : public Model {
     return factor;
   }
 
-  Interaction makeInteraction(const Particles& P, std::size_t i, std::size_t j,
-                              double surface) const {
+  // The reference chord X_j − X_i.
+  static Vec chord0(const Particles& P, std::size_t i, std::size_t j) {
+    const double *fi = P.fixed(i), *fj = P.fixed(j);
+    return {fj[FX_X] - fi[FX_X], fj[FX_Y] - fi[FX_Y], fj[FX_Z] - fi[FX_Z]};
+  }
+
+  Stiffness stiffness(const Particles& P, std::size_t i, std::size_t j, double L,
+                      double surface) const {
     const double* fi = P.fixed(i);
     const double* fj = P.fixed(j);
-    Interaction k;
-    k.j = static_cast<std::int32_t>(j);
-    k.r0 = {fj[FX_X] - fi[FX_X], fj[FX_Y] - fi[FX_Y], fj[FX_Z] - fi[FX_Z]};
-    k.L0 = std::sqrt(dot(k.r0, k.r0));
-    k.invL0 = 1 / k.L0;
-    k.n0 = {k.r0[0] * k.invL0, k.r0[1] * k.invL0, k.r0[2] * k.invL0};
-    const double s = par_.s, L = k.L0;
+    Stiffness k;
+    const double s = par_.s;
     k.kind = mplm::kindOf(isSteel(fi), isSteel(fj), par_.damage);
     if (k.kind == Kind::Bar) {
       k.ka = par_.steelE * fi[AREA] / L;
@@ -373,12 +382,11 @@ class Mplm3d final : public Model {
     return k;
   }
 
-  // The elastic load of interaction k on particle i (alterable rows a, aj) in the model's
-  // kinematics, and with `mj` the moment on its partner; the rotation vectors of the small
-  // form come from rotationVectors().
-  EndLoad load(const Interaction& k, const double* a, const double* aj, std::size_t i,
-               double* state, bool update, Vec* mj = nullptr) const {
-    return elasticForce(k, chord(k, a, aj, i), par_.law, state, update, mj);
+  // The elastic load of interaction k on particle i in the model's kinematics, and with `mj` the
+  // moment on its partner; the rotation vectors of the small form come from rotationVectors().
+  EndLoad load(const Particles& P, const Interaction& k, std::size_t i, double* state, bool update,
+               Vec* mj = nullptr) const {
+    return elasticForce(k, types_[k.type], chord(P, k, i), par_.law, state, update, mj);
   }
   // The bond of owned particle j whose partner is gid (bonds are sorted by partner ID).
   static std::size_t reverse(const Bonds& B, std::size_t j, Gid gid) {
@@ -392,10 +400,12 @@ class Mplm3d final : public Model {
     }
     return lo;
   }
-  Chord chord(const Interaction& k, const double* a, const double* aj, std::size_t i) const {
+  Chord chord(const Particles& P, const Interaction& k, std::size_t i) const {
+    const double *a = P.alter(i), *aj = P.alter(k.j);
     const Vec r{aj[AX] - a[AX], aj[AY] - a[AY], aj[AZ] - a[AZ]};
     if (corot_) return corotChord(k, r, orientation(a), orientation(aj));
-    const Vec d{r[0] - k.r0[0], r[1] - k.r0[1], r[2] - k.r0[2]};
+    const Vec r0 = chord0(P, i, static_cast<std::size_t>(k.j));
+    const Vec d{r[0] - r0[0], r[1] - r0[1], r[2] - r0[2]};
     return smallChord(k, d, th_[i], th_[static_cast<std::size_t>(k.j)]);
   }
 
@@ -410,7 +420,7 @@ class Mplm3d final : public Model {
       double e = 0;
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
         const Interaction& k = inter_[b];
-        e += 0.5 * elasticEnergy(k, chord(k, P.alter(i), P.alter(k.j), i), par_.law, B.attr(b));
+        e += 0.5 * elasticEnergy(k, types_[k.type], chord(P, k, i), par_.law, B.attr(b));
       }
       return e;
     });
@@ -447,8 +457,9 @@ class Mplm3d final : public Model {
           const Interaction& k = inter_[b];
           const double* uj = &u[6 * static_cast<std::size_t>(k.j)];
           const Vec d{uj[0] - ui[0], uj[1] - ui[1], uj[2] - ui[2]};
-          const EndLoad e = elasticForce(k, smallChord(k, d, rowVec(ui, 3), rowVec(uj, 3)),
-                                         mplm::DamageLaw{}, nullptr, false);
+          const EndLoad e =
+              elasticForce(k, types_[k.type], smallChord(k, d, rowVec(ui, 3), rowVec(uj, 3)),
+                           mplm::DamageLaw{}, nullptr, false);
           for (int c = 0; c < 3; ++c) {
             sum[c] += e.f[c];
             sum[3 + c] += e.m[c];
@@ -507,7 +518,7 @@ class Mplm3d final : public Model {
       const double* aj = P.alter(k.j);
       double state[N_BOND];
       std::copy_n(B.attr(b), N_BOND, state);
-      const EndLoad e = load(k, a, aj, i, state, false);
+      const EndLoad e = load(P, k, i, state, false);
       for (int p = 0; p < 3; ++p)
         for (int q = 0; q < 3; ++q) s[p][q] += (aj[AX + p] - a[AX + p]) * e.f[q];
     }
@@ -527,8 +538,15 @@ class Mplm3d final : public Model {
   bool surface_ = true;  // surface_correction
   ElasticConstants k_;
   std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
-  std::vector<EndLoad> ends_;       // per bond: elastic load on its particle, this step
-  mutable std::vector<Vec> th_;     // rotation vector per local particle (small form)
+  std::vector<Stiffness> types_;    // the distinct constants of the interactions
+  // Per bond, this step: the elastic load on its particle and the damping coefficients
+  // after damage (keep × c, keep × cr).
+  struct End {
+    Vec f, m;
+    double c, cr;
+  };
+  std::vector<End> ends_;
+  mutable std::vector<Vec> th_;  // rotation vector per local particle (small form)
   mplm::Inertia in_;
   double omegaMax_ = 0;
 };
