@@ -162,8 +162,9 @@ class Integrator {
   // Quasi-static: relaxes the owned particles to static equilibrium under the loads and
   // prescribed values × `factor` (the previous load step's factor `previous`), by adaptive
   // dynamic relaxation (engine/relaxation.cpp). `forces` evaluates the model's forces at the
-  // current state; `exchange` refreshes the ghosts after the particles moved; `source`
-  // names the run's input in errors.
+  // current state; `exchange` refreshes the ghosts after the particles moved; `broken`
+  // counts the broken interactions of the current state (collective); `source` names the
+  // run's input in errors.
   struct Relaxed {
     bool converged = true;
     bool runaway = false;  // not converged: the motion ran away from the last equilibrium
@@ -175,7 +176,7 @@ class Integrator {
   };
   Relaxed relax(Context& ctx, const Solver& solver, const std::string& source, double factor,
                 double previous, const std::function<void()>& forces,
-                const std::function<void()>& exchange);
+                const std::function<void()>& exchange, const std::function<long()>& broken);
 
  private:
   void resolve(const Schema& schema);

@@ -35,7 +35,9 @@ constexpr double kProbe = 1e-7;
 // Under force control a load step has no equilibrium near the last one when its displacement
 // along the loads exceeds kRunaway times the last equilibrium's (looked at every
 // kRunawayEvery iterations), or when it stalls: looked at after kFirstLook iterations and
-// each doubling of them, the residual did not halve while the structure kept moving.
+// each doubling of them, the residual did not halve while the structure kept moving and
+// broke more interactions (a crack running). Without new damage the iterate's lattice is
+// the committed one, elastic: its relaxation converges, however slowly, or runs away.
 constexpr double kRunaway = 10;
 constexpr long kRunawayEvery = 10;
 constexpr long kFirstLook = 500;
@@ -99,7 +101,8 @@ double Integrator::highestFrequencySquared(Context& ctx, const std::function<voi
 Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const std::string& source,
                                       double factor, double previous,
                                       const std::function<void()>& forces,
-                                      const std::function<void()>& exchange) {
+                                      const std::function<void()>& exchange,
+                                      const std::function<long()>& broken) {
   Particles& P = ctx.particles;
   ensureBodies(ctx);
   const std::size_t n = P.owned();
@@ -198,6 +201,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   Relaxed out;
   long lookAt = kFirstLook;  // the next look for a stalled relaxation, and the last one's
   double lookResidual = 0, lookAlong = 0;
+  long lookBroken = 0;
   const long nOwned = static_cast<long>(n);
   for (long it = 0;; ++it) {
     if (it > 0) ctx.bonds.restore(committed);
@@ -241,13 +245,16 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     if (!control.active() && it > 0 && it % kRunawayEvery == 0) {
       const double along = alongLoads();
       // Stalled: since the last look the residual has not halved while the structure kept
-      // moving along the loads (by over a tenth of its move before that look); not in a
-      // load step from the unloaded state, whose slowest modes may take long to start.
+      // moving along the loads (by over a tenth of its move before that look) and broke
+      // more interactions; not in a load step from the unloaded state, whose slowest modes
+      // may take long to start.
       bool stalled = false;
       if (it == lookAt) {
+        const long now = broken();
         stalled = lookAt > kFirstLook && lastAlong != 0 && out.residual > 0.5 * lookResidual &&
-                  std::fabs(along - lookAlong) > 0.1 * std::fabs(lookAlong - lastAlong);
-        lookAt *= 2, lookResidual = out.residual, lookAlong = along;
+                  std::fabs(along - lookAlong) > 0.1 * std::fabs(lookAlong - lastAlong) &&
+                  now > lookBroken;
+        lookAt *= 2, lookResidual = out.residual, lookAlong = along, lookBroken = now;
       }
       if (stalled || (lastAlong != 0 && std::fabs(along) > kRunaway * std::fabs(lastAlong))) {
         out.converged = false;

@@ -289,7 +289,8 @@ bool Simulation::relaxLoadStep() {
     const double increment = std::min(path.increment, full - path.progress);
     factor = staticFactor(path.progress + increment);
     ctx_->setStaticFactor(factor);
-    r = integrator_->relax(*ctx_, solver, cfg_.source, factor, previous, forces, exchange);
+    r = integrator_->relax(*ctx_, solver, cfg_.source, factor, previous, forces, exchange,
+                           [&] { return brokenInteractions(); });
     broken = brokenInteractions();
     const bool tooMany = solver.maxBroken > 0 && broken - brokenBefore > solver.maxBroken;
     if (r.converged && !tooMany) {

@@ -5,9 +5,12 @@
 //     assembled by finite differences, solved directly) within 1e-6;
 //   * with damage, every load step's converged state balances the loads of the damaged
 //     lattice: the forces evaluated again there leave an out-of-balance force below the
-//     tolerance.
+//     tolerance;
+//   * past its peak under force control, the structure's failure is detected within a load
+//     step's first iterations and reported, never looped on.
 #include "quasi_static.hpp"
 
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,6 +28,11 @@
 
 namespace pdq::mplm {
 namespace {
+
+// Force control towards kBeyondPeak × the unit line load, far above the small beam's strength,
+// in kLoadSteps: the first holds (the beam cracks at 120).
+constexpr double kBeyondPeak = 2000;
+constexpr long kLoadSteps = 16;
 
 TEST(QuasiStatic, PatchTestRelaxesToTheUniformStrain) {
   constexpr double s = 0.02, L = 0.3, exx = 1e-4, eyy = -3e-5, exy = 0;
@@ -167,6 +175,32 @@ TEST(QuasiStatic, DamagedStateIsInEquilibrium) {
   if (comm.root())
     std::printf("damaged cantilever: %g, %g, %g iterations; %g damaged interactions\n", rows[0][2],
                 rows[1][2], rows[2][2], test::global(*sim, "damaged"));
+}
+
+// Force control beyond the beam's strength: once a load step finds no equilibrium, the run
+// stops at the last one and says why; each try is stopped by the solver's early look at its
+// motion (runaway or a crack running), not by max_iterations, which here is far more than
+// the test could wait for.
+TEST(QuasiStatic, PeakUnderForceControlIsDetectedAndReported) {
+  Comm comm;
+  Solver solver = test::solver(1e-6, kLoadSteps, 100000000);
+  solver.maxCutBacks = 1;
+  auto sim = test::quasiStatic(comm, test::params({}), test::smallBeam(), solver, "qs_peak_out",
+                               kBeyondPeak);
+  while (sim->advance()) {
+  }
+  sim->finish();
+  const Simulation::LoadStep& last = sim->lastLoadStep();
+  const std::string& reason = sim->context().stopReason();
+  EXPECT_GT(last.factor, 0) << "a first load step holds";
+  EXPECT_LT(last.factor, kBeyondPeak);
+  EXPECT_GT(last.beyond, last.factor);
+  EXPECT_LE(last.beyond - last.factor, kBeyondPeak / kLoadSteps / 2) << "cut back once";
+  EXPECT_THAT(reason, ::testing::HasSubstr("no equilibrium beyond load factor"));
+  EXPECT_THAT(reason, ::testing::HasSubstr("has no equilibrium near the last"));
+  EXPECT_THAT(reason, ::testing::HasSubstr("passed its peak load"));
+  EXPECT_GT(test::global(*sim, "damaged"), 0);
+  if (comm.root()) std::printf("stopped: %s\n", reason.c_str());
 }
 
 }  // namespace
