@@ -69,6 +69,10 @@ beam() {  # beam <test> <measured csv> <its load column> <measured peak> <unit> 
   local dir=${t}_out/strength held failed
   read -r held failed < <(awk -F, 'NR > 1 { if ($3 == 1 && $2 > h) { h = $2; hn = $1 }
     if ($3 == 0 && (f == "" || $2 < f)) { f = $2; fn = $1 } } END { print hn, fn }' "$dir/trials.csv")
+  if [ -z "$failed" ]; then
+    echo "| $6 | $4 $5 | no bracket: see $work/$dir/strength.txt |"
+    return
+  fi
   local n
   for n in "$held" "$failed"; do
     { echo "# pdq's curve of bench/lab/$t.toml (bench/lab/run.sh): trial $n of its strength"
