@@ -51,26 +51,43 @@ lammps_rate() {
   awk '/^Loop time of/ { printf "%.4e\n", $12 * $9 / $4 }' "$1"
 }
 
+# LAMMPS's CPU rate: its rate over the share of the loop its ranks spent on a core
+# ("P% CPU use with ..."), the counterpart of pdq's CPU time.
+lammps_cpu_rate() {
+  awk '/^Loop time of/ { r = $12 * $9 / $4 } /% CPU use/ { c = $1 + 0 } END { printf "%.4e\n", r * 100 / c }' "$1"
+}
+
 out=$build/bench/lj/throughput.txt
 {
-  echo "# LJ throughput, particle-steps/s (wall clock, time loop only); $(date -u +%Y-%m-%dT%H:%MZ) on $(nproc --all) cores"
-  printf "%-8s %-5s %-6s %12s %12s %12s %10s %10s\n" atoms ranks steps pdq lammps lammps-opt pdq/lmp pdq/opt
+  echo "# LJ throughput, particle-steps/s (wall clock, time loop only); $(date -u +%Y-%m-%dT%H:%MZ) on $(nproc --all) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "# cpu: the same over the busiest pdq rank's CPU time, and over LAMMPS's CPU use of lj/cut/opt"
+  printf "%-8s %-5s %-6s %12s %12s %12s %10s %10s %12s %12s %8s\n" atoms ranks steps pdq lammps \
+    lammps-opt pdq/lmp pdq/opt pdq_cpu opt_cpu cpu/opt
 } | tee "$out.tmp"
 for cells in 20 40; do
   atoms=$((4 * cells * cells * cells))
   steps=$([ "$cells" -eq 20 ] && echo "${LJ_STEPS_SMALL:-200}" || echo "${LJ_STEPS_LARGE:-100}")
   lammps_input "$cells" "$steps" > "$work/in.lj"
   for np in "${ranks[@]}"; do
-    pdq=$("${mpirun[@]}" -np "$np" "$bench" "$cells" "$steps" |
-      sed -n 's/.*particle_steps_per_s=\([^ ]*\).*/\1/p')
+    line=$("${mpirun[@]}" -np "$np" "$bench" "$cells" "$steps")
+    pdq=$(sed -n 's/.*particle_steps_per_s=\([^ ]*\).*/\1/p' <<<"$line")
+    pdq_cpu=$(sed -n 's/.*cpu_seconds=\([^ ]*\).*/\1/p' <<<"$line")
     "${mpirun[@]}" -np "$np" "$lmp" -in "$work/in.lj" -log "$work/plain.log" -screen none
     "${mpirun[@]}" -np "$np" "$lmp" -sf opt -in "$work/in.lj" -log "$work/opt.log" -screen none
     plain=$(lammps_rate "$work/plain.log")
     opt=$(lammps_rate "$work/opt.log")
-    awk -v a="$atoms" -v n="$np" -v s="$steps" -v p="$pdq" -v l="$plain" -v o="$opt" \
-      'BEGIN { printf "%-8s %-5s %-6s %12.4e %12.4e %12.4e %10.3f %10.3f\n", a, n, s, p, l, o, p / l, p / o }' |
+    opt_cpu=$(lammps_cpu_rate "$work/opt.log")
+    awk -v a="$atoms" -v n="$np" -v s="$steps" -v p="$pdq" -v l="$plain" -v o="$opt" -v c="$pdq_cpu" \
+      -v oc="$opt_cpu" 'BEGIN { pc = a * s / c; printf "%-8s %-5s %-6s %12.4e %12.4e %12.4e %10.3f %10.3f %12.4e %12.4e %8.3f\n", a, n, s, p, l, o, p / l, p / o, pc, oc, pc / oc }' |
       tee -a "$out.tmp"
   done
 done
+# 1 -> 2 ranks speed-up of each code, from the rows above.
+awk '!/^#/ && NF == 11 { key = $1; if ($2 == 1) { p1[key] = $4; o1[key] = $6; c1[key] = $9; q1[key] = $10 }
+       if ($2 == 2) { p2[key] = $4; o2[key] = $6; c2[key] = $9; q2[key] = $10 } }
+     END { for (k in p1) if (k in p2)
+       printf "# %s atoms, 1 -> 2 ranks: pdq %.2fx (cpu %.2fx), lj/cut/opt %.2fx (cpu %.2fx)\n", k,
+         p2[k] / p1[k], c2[k] / c1[k], o2[k] / o1[k], q2[k] / q1[k] }' "$out.tmp" | sort -n -k2 | tee -a "$out.tmp"
+echo "# load average $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$out.tmp"
 mv "$out.tmp" "$out"
 echo "# written to $out"

@@ -14,6 +14,8 @@
 //                                           every EVERY steps: their cost
 //   pd_bench compare FILE_A FILE_B          largest |u_a - u_b| over the largest |u_a|
 //   pd_bench bandwidth                      one core's memory read bandwidth
+//   pd_bench divider                        one core's square-root and division throughput
+#include <immintrin.h>
 #include <mpi.h>
 #include <omp.h>
 #include <sys/resource.h>
@@ -21,6 +23,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 #include <iomanip>
 #include <sstream>
@@ -50,16 +53,28 @@ double peakMemoryMiB() {
   return u.ru_maxrss / 1024.0;  // kB on Linux
 }
 
-// Runs the steps and returns their wall time (max over ranks), setup excluded.
-double timedRun(Simulation& sim, Comm& comm) {
+double cpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// The time of the steps, setup excluded: wall clock and the busiest rank's CPU time (on a
+// shared machine the CPU time is the work done; the wall clock also counts waiting for a core).
+struct RunTime {
+  double wall, cpu;
+};
+
+RunTime timedRun(Simulation& sim, Comm& comm) {
   sim.setup();
   comm.barrier();
-  const double t0 = MPI_Wtime();
+  const double t0 = MPI_Wtime(), c0 = cpuSeconds();
   while (sim.advance()) {
   }
+  const double cpu = comm.max(cpuSeconds() - c0);
   const double t = comm.max(MPI_Wtime() - t0);
   sim.finish();
-  return t;
+  return {t, cpu};
 }
 
 // Sum over ranks of one owned particle's alterable attribute (exact: one term is non-zero).
@@ -92,7 +107,7 @@ int cantilever(int argc, char** argv, Comm& comm) {
   for (Gid g : pb.particles.gid) monitored = std::max(monitored, g);
   const auto simulation = makeSimulation(std::move(pb), comm);
   Simulation& sim = *simulation;
-  const double t = timedRun(sim, comm);
+  const double t = timedRun(sim, comm).wall;
   const double y = attributeOf(sim, monitored, 1);
   const long bonds = comm.sum(static_cast<long>(sim.bonds().count()));
   double mem = peakMemoryMiB();
@@ -125,14 +140,19 @@ int block(int argc, char** argv, Comm& comm) {
   const std::size_t nParticles = pb.particles.size();
   const auto simulation = makeSimulation(std::move(pb), comm);
   Simulation& sim = *simulation;
-  const double t = timedRun(sim, comm);
+  const RunTime rt = timedRun(sim, comm);
+  const double t = rt.wall;
   const long bonds = comm.sum(static_cast<long>(sim.bonds().count()));
+  const Timers& tm = sim.timers();
+  const double force = comm.max(tm[Phase::Force]), halo = comm.max(tm[Phase::Communication]);
   if (comm.root())
     std::printf(
         "pdq %s N=%zu bonds=%ld ranks=%d threads=%d steps=%ld time=%.4f s  "
-        "particle-steps/s=%.4g  bond-steps/s=%.4g  peak_MiB(rank0)=%.1f\n",
+        "particle-steps/s=%.4g  bond-steps/s=%.4g  cpu=%.4f s  cpu-particle-steps/s=%.4g  "
+        "force=%.3f s  halo=%.3f s  peak_MiB(rank0)=%.1f\n",
         model.c_str(), nParticles, bonds, comm.size(), omp_get_max_threads(), steps, t,
-        nParticles * steps / t, bonds * double(steps) / t, peakMemoryMiB());
+        nParticles * steps / t, bonds * double(steps) / t, rt.cpu, nParticles * steps / rt.cpu,
+        force, halo, peakMemoryMiB());
   if (!dir.empty()) {
     Particles& P = sim.particles();
     std::ostringstream os;
@@ -176,7 +196,7 @@ int featureCost(int argc, char** argv, Comm& comm) {
     auto written = std::make_unique<CheckpointOutput>(pb.output, 0);
     const auto simulation = makeSimulation(std::move(pb), comm);
     if (checkpoints && on) simulation->addOutput(std::move(written));
-    best[on] = std::min(best[on], timedRun(*simulation, comm));
+    best[on] = std::min(best[on], timedRun(*simulation, comm).wall);
   }
   if (!comm.root()) return 0;
   const double cost = 100 * (best[1] - best[0]) / best[0];
@@ -229,6 +249,57 @@ int bandwidth() {
   return 0;
 }
 
+// The square-root and division throughput of one core (AVX2, four doubles per instruction,
+// eight independent streams): the PMB kernel needs one square root and one division per
+// four bonds, the LPS kernels two square roots and one division, and the exact results the
+// bitwise tests demand rule out a reciprocal estimate, so these bound the bond-steps/s.
+// Times are CPU time (the machine is shared), best of five.
+[[gnu::target("avx2")]] double dividerSeconds(int ops, long n, double* check) {
+  __m256d a[8], s[8];
+  for (int k = 0; k < 8; ++k) {
+    a[k] = _mm256_set1_pd(1.5 + k);
+    s[k] = _mm256_setzero_pd();
+  }
+  const __m256d step = _mm256_set1_pd(1e-9), one = _mm256_set1_pd(1.0);
+  const double c0 = cpuSeconds();
+  for (long r = 0; r < n; ++r)
+    for (int k = 0; k < 8; ++k) {
+      a[k] = _mm256_add_pd(a[k], step);
+      __m256d v = a[k];
+      if (ops & 1) v = _mm256_sqrt_pd(v);
+      if (ops & 2) v = _mm256_div_pd(one, v);
+      if (ops & 4) v = _mm256_sqrt_pd(_mm256_add_pd(v, one));
+      s[k] = _mm256_add_pd(s[k], v);
+    }
+  const double t = cpuSeconds() - c0;
+  alignas(32) double l[4];
+  for (int k = 0; k < 8; ++k) {
+    _mm256_store_pd(l, s[k]);
+    *check += l[0] + l[1] + l[2] + l[3];
+  }
+  return t / static_cast<double>(8 * n);
+}
+
+int divider() {
+  if (!__builtin_cpu_supports("avx2")) {
+    std::printf("divider: no AVX2 on this CPU\n");
+    return 0;
+  }
+  const long n = 20'000'000;
+  double check = 0, best[8] = {1, 1, 1, 1, 1, 1, 1, 1};
+  for (int rep = 0; rep < 5; ++rep)
+    for (int ops : {1, 2, 3, 7}) best[ops] = std::min(best[ops], dividerSeconds(ops, n, &check));
+  std::printf(
+      "divider (1 core, CPU time, best of 5, 4 doubles each): sqrt %.2f ns, div %.2f ns, "
+      "sqrt+div %.2f ns, 2 sqrt+div %.2f ns  (check %.6g)\n",
+      1e9 * best[1], 1e9 * best[2], 1e9 * best[3], 1e9 * best[7], check);
+  std::printf(
+      "divider bound: PMB %.3g bond-steps/s (sqrt+div per 4 bonds), "
+      "LPS %.3g (2 sqrt+div per 4 bonds)\n",
+      4 / best[3], 4 / best[7]);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -241,9 +312,10 @@ int main(int argc, char** argv) {
     if (what == "check_cost" || what == "checkpoint_cost") return featureCost(argc, argv, comm);
     if (what == "compare") return comm.root() ? compare(argc, argv) : 0;
     if (what == "bandwidth") return comm.root() ? bandwidth() : 0;
-    std::fprintf(
-        stderr,
-        "usage: pd_bench cantilever|block|check_cost|checkpoint_cost|compare|bandwidth ...\n");
+    if (what == "divider") return comm.root() ? divider() : 0;
+    std::fprintf(stderr,
+                 "usage: pd_bench "
+                 "cantilever|block|check_cost|checkpoint_cost|compare|bandwidth|divider ...\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pd_bench: %s\n", e.what());

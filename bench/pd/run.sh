@@ -22,35 +22,51 @@ N=47; M=721; D=309; BIGM=1617; BIGN=693
 if [[ $QUICK == quick ]]; then N=14; M=90; D=30; BIGM=160; BIGN=70; fi
 export OMP_NUM_THREADS=1
 
+echo "load average $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc --all) cores (the machine is shared: rates are"
+echo " wall clock over the time loop; cpu rates are the busiest rank's CPU time, pdq's own work)"
 "$BENCH" bandwidth
 echo "(bytes per bond-step streamed by pdq: PMB 20 = 4 partner index + 16 attributes;"
 echo " LPS 56 = two passes of 4 + 24; partner positions come from cache)"
+"$BENCH" divider
 echo
 echo "== pdq vs LAMMPS PERI: ${N}^3 simple-cubic block, delta = 3 s, 200 steps =="
-printf '%-5s %-5s %14s %14s %14s %14s %8s %12s\n' model ranks pdq_ptcl/s lmp_ptcl/s \
-  pdq_bond/s lmp_bond/s ratio rel_diff
+printf '%-5s %-5s %12s %12s %12s %12s %12s %7s %10s\n' model ranks pdq_ptcl/s pdq_cpu/s \
+  lmp_ptcl/s lmp_cpu/s pdq_bond/s ratio rel_diff
+declare -A rate
 for model in pmb lps; do
   for np in 1 2; do
     dir="$WORK/$model.np$np"; mkdir -p "$dir"
     out=$("${MPIRUN[@]}" -np "$np" "$BENCH" block "$N" "$model" 200 "$dir")
-    pdq_ps=$(sed -n 's/.*particle-steps\/s=\([^ ]*\).*/\1/p' <<<"$out")
+    pdq_ps=$(sed -n 's/.* particle-steps\/s=\([^ ]*\).*/\1/p' <<<"$out")
+    pdq_cpu=$(sed -n 's/.*cpu-particle-steps\/s=\([^ ]*\).*/\1/p' <<<"$out")
     pdq_bs=$(sed -n 's/.*bond-steps\/s=\([^ ]*\).*/\1/p' <<<"$out")
-    lmp_ps=n/a; lmp_bs=n/a; ratio=n/a; rel=n/a
+    lmp_ps=n/a; lmp_cpu=n/a; ratio=n/a; rel=n/a
     if [[ -x $LMP ]]; then
       (cd "$dir" && env -i PATH=/usr/bin:/bin HOME=/tmp OMP_NUM_THREADS=1 \
          "${MPIRUN[@]}" -np "$np" "$LMP" -in lammps.in -log lammps.log >lmp.out 2>&1)
       loop=$(grep '^Loop time' "$dir/lammps.log" | tail -1 | awk '{print $4}')
       natoms=$(grep '^Loop time' "$dir/lammps.log" | tail -1 | awk '{print $(NF-1)}')
-      bonds=$(sed -n 's/.*total # of bonds = \([0-9]*\).*/\1/p' "$dir/lammps.log" | tail -1)
+      # "P% CPU use with ...": the share of the loop the ranks spent on a core
+      cpu_use=$(sed -n 's/^\([0-9.]*\)% CPU use.*/\1/p' "$dir/lammps.log" | tail -1)
       lmp_ps=$(awk -v n="$natoms" -v t="$loop" 'BEGIN{printf "%.4g", n*200/t}')
-      lmp_bs=$(awk -v n="$bonds" -v t="$loop" 'BEGIN{printf "%.4g", n*200/t}')
+      lmp_cpu=$(awk -v r="$lmp_ps" -v c="${cpu_use:-100}" 'BEGIN{printf "%.4g", r*100/c}')
       ratio=$(awk -v a="$pdq_ps" -v b="$lmp_ps" 'BEGIN{printf "%.2f", a/b}')
       rel=$("$BENCH" compare "$dir/pdq.disp" "$dir/lammps.dump" | sed -n 's/.*relative=//p')
     fi
-    printf '%-5s %-5s %14s %14s %14s %14s %8s %12s\n' "$model" "$np" "$pdq_ps" "$lmp_ps" \
-      "$pdq_bs" "$lmp_bs" "$ratio" "$rel"
+    rate[$model.$np]="$pdq_ps $pdq_cpu $lmp_ps $lmp_cpu"
+    printf '%-5s %-5s %12s %12s %12s %12s %12s %7s %10s\n' "$model" "$np" "$pdq_ps" "$pdq_cpu" \
+      "$lmp_ps" "$lmp_cpu" "$pdq_bs" "$ratio" "$rel"
   done
 done
+echo "1 -> 2 ranks speed-up (wall clock; CPU time of the busiest rank):"
+for model in pmb lps; do
+  read -r a1 c1 l1 lc1 <<<"${rate[$model.1]}"
+  read -r a2 c2 l2 lc2 <<<"${rate[$model.2]}"
+  awk -v m="$model" -v a1="$a1" -v a2="$a2" -v c1="$c1" -v c2="$c2" -v l1="$l1" -v l2="$l2" \
+    -v lc1="$lc1" -v lc2="$lc2" 'function r(x, y) { return (x + 0 > 0 && y + 0 > 0) ? sprintf("%.2fx", y / x) : "n/a" }
+    BEGIN { printf "  %-4s pdq %s (cpu %s)   LAMMPS %s (cpu %s)\n", m, r(a1, a2), r(c1, c2), r(l1, l2), r(lc1, lc2) }'
+done
+echo "load average $(cut -d' ' -f1-3 /proc/loadavg)"
 
 echo
 echo "== Instability checks (non-finite values, skin, growing motion; every step) on the PMB block, 1 rank =="
