@@ -8,8 +8,9 @@
 //                                           prints throughput; with DIR writes DIR/pdq.disp
 //                                           (ID ux uy uz) and DIR/lammps.data + DIR/lammps.in,
 //                                           the same problem for LAMMPS's PERI package
-//   pd_bench check_cost N STEPS             the block (PMB) with and without the
-//                                           instability check every step: its cost
+//   pd_bench check_cost N STEPS [RUNS]      the block (PMB) checked at every second
+//                                           step: the instability check's cost (CPU
+//                                           and wall time, checked steps over the others)
 //   pd_bench checkpoint_cost N STEPS EVERY  the block (PMB) with and without a checkpoint
 //                                           every EVERY steps: their cost
 //   pd_bench compare FILE_A FILE_B          largest |u_a - u_b| over the largest |u_a|
@@ -75,6 +76,12 @@ RunTime timedRun(Simulation& sim, Comm& comm) {
   const double t = comm.max(MPI_Wtime() - t0);
   sim.finish();
   return {t, cpu};
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : (v[n / 2 - 1] + v[n / 2]) / 2;
 }
 
 // Sum over ranks of one owned particle's alterable attribute (exact: one term is non-zero).
@@ -171,42 +178,90 @@ int block(int argc, char** argv, Comm& comm) {
   return 0;
 }
 
-// The cost of the instability check every step (check_cost N STEPS) or of checkpoints
-// every EVERY steps (checkpoint_cost N STEPS EVERY): the PMB block run with it and without
-// it, alternately three times each (the fastest of each counts).
+// The cost of the instability check every step (check_cost N STEPS [RUNS]) or of
+// checkpoints every EVERY steps (checkpoint_cost N STEPS EVERY): the PMB block run without
+// it and with it.
+//
+// The checks: RUNS runs (default 3) of the block checked at every second step, each
+// step's CPU time (the busiest rank's, all its threads) and wall time taken alone. A machine shared
+// with others slows a step by far more than the checks cost, and by varying amounts from
+// one second to the next, so the cost is taken from steps next to each other: per run, the
+// median of the checked steps over the median of the others, less 1; printed for each run,
+// with the median and range over runs.
+// Checkpoints: three runs with and three without, alternately, the fastest of each kind.
 int featureCost(int argc, char** argv, Comm& comm) {
   const bool checkpoints = std::string(argv[1]) == "checkpoint_cost";
   if (argc < (checkpoints ? 5 : 4))
     throw InputError("pd_bench", 0,
-                     "usage: pd_bench check_cost N STEPS | checkpoint_cost N STEPS EVERY");
+                     "usage: pd_bench check_cost N STEPS [RUNS] | checkpoint_cost N STEPS EVERY");
   lammps::Block bl;
   bl.n = std::stoi(argv[2]);
   const long steps = std::stol(argv[3]);
   const long every = checkpoints ? std::stol(argv[4]) : 0;
   const std::string dir = checkpoints ? "pd_checkpoint_cost_out" : "pd_check_cost_out";
-  double best[2] = {1e300, 1e300};
-  for (int round = 0; round < 6; ++round) {
-    const int on = round % 2;
+  auto simulation = [&](bool checks, bool written) {
     Problem pb = makeProblem("pmb", lammps::blockParams(bl, "pmb"), {});
     pb.particles = lammps::blockParticles(bl, pb.model->schema());
     pb.run.steps = steps;
     pb.run.outDir = dir;
-    if (!checkpoints) pb.run.checkEvery = on;
+    pb.run.checkEvery = checks ? 2 : 0;
     pb.output.checkpointEvery = every;
-    auto written = std::make_unique<CheckpointOutput>(pb.output, 0);
-    const auto simulation = makeSimulation(std::move(pb), comm);
-    if (checkpoints && on) simulation->addOutput(std::move(written));
-    best[on] = std::min(best[on], timedRun(*simulation, comm).wall);
-  }
-  if (!comm.root()) return 0;
-  const double cost = 100 * (best[1] - best[0]) / best[0];
+    pb.output.finalRestart = false;
+    auto out = std::make_unique<CheckpointOutput>(pb.output, 0);
+    auto sim = makeSimulation(std::move(pb), comm);
+    if (written) sim->addOutput(std::move(out));
+    return sim;
+  };
   if (!checkpoints) {
-    std::printf(
-        "pmb N=%d^3 steps=%ld ranks=%d: without check %.4f s, checked every step %.4f s: "
-        "check cost %.2f%% of a step\n",
-        bl.n, steps, comm.size(), best[0], best[1], cost);
+    const int runs = argc > 4 ? std::stoi(argv[4]) : 3;
+    if (runs < 1) throw InputError("pd_bench", 0, "RUNS must be at least 1");
+    std::vector<double> cpuCost, wallCost;
+    for (int r = 0; r < runs; ++r) {
+      const auto sim = simulation(true, false);
+      sim->setup();
+      std::vector<double> cpu[2], wall[2];  // unchecked, checked steps
+      for (;;) {
+        comm.barrier();
+        const double t0 = MPI_Wtime(), c0 = cpuSeconds();
+        const bool more = sim->advance();
+        const double c = comm.max(cpuSeconds() - c0);
+        const double w = comm.max(MPI_Wtime() - t0);
+        const int checked = sim->step() % 2 == 0 ? 1 : 0;
+        cpu[checked].push_back(c);
+        wall[checked].push_back(w);
+        if (!more) break;
+      }
+      sim->finish();
+      cpuCost.push_back(100 * (median(cpu[1]) / median(cpu[0]) - 1));
+      wallCost.push_back(100 * (median(wall[1]) / median(wall[0]) - 1));
+      if (comm.root())
+        std::printf(
+            "run %d: a step %.3f ms CPU, %.3f ms wall (medians without the check); "
+            "check cost: CPU %.2f%%, wall %.2f%%\n",
+            r + 1, 1e3 * median(cpu[0]), 1e3 * median(wall[0]), cpuCost.back(), wallCost.back());
+    }
+    if (comm.root())
+      std::printf(
+          "pmb N=%d^3 steps=%ld ranks=%d threads=%d, %d runs checked every second step: "
+          "check cost CPU %.2f%% of a step (median; runs from %.2f%% to %.2f%%), wall %.2f%% "
+          "(from %.2f%% to %.2f%%)\n",
+          bl.n, steps, comm.size(), omp_get_max_threads(), runs, median(cpuCost),
+          *std::min_element(cpuCost.begin(), cpuCost.end()),
+          *std::max_element(cpuCost.begin(), cpuCost.end()), median(wallCost),
+          *std::min_element(wallCost.begin(), wallCost.end()),
+          *std::max_element(wallCost.begin(), wallCost.end()));
     return 0;
   }
+  std::vector<double> times[2];
+  for (int round = 0; round < 6; ++round) {
+    const int on = round % 2;
+    times[on].push_back(timedRun(*simulation(false, on), comm).wall);
+  }
+  if (!comm.root()) return 0;
+  double best[2] = {1e300, 1e300};
+  for (int on = 0; on < 2; ++on)
+    for (double t : times[on]) best[on] = std::min(best[on], t);
+  const double cost = 100 * (best[1] - best[0]) / best[0];
   const long count = steps / every + (steps % every ? 1 : 0);
   std::printf(
       "pmb N=%d^3 steps=%ld ranks=%d: without checkpoints %.4f s, with one every %ld steps "

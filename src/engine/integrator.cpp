@@ -1,6 +1,7 @@
 #include "engine/integrator.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -19,6 +20,12 @@ int column(const std::vector<std::string>& names, const std::string& name, const
     if (names[k] == name) return static_cast<int>(k);
   throw std::logic_error(std::string("the model's motion names '") + name +
                          "', which is not in its " + table + " attributes");
+}
+
+// Bit 63 of the result is set when x is not finite (its exponent all ones): no branch,
+// and no comparison for a NaN to fool.
+inline std::uint64_t notFiniteBit(double x) {
+  return (std::bit_cast<std::uint64_t>(x) & 0x7ff0000000000000ull) + 0x0010000000000000ull;
 }
 
 }  // namespace
@@ -159,6 +166,7 @@ void Integrator::resolve(const Schema& s) {
     throw std::logic_error(
         "the model's motion needs as many velocity and force columns as positions (at most 3)");
   nT_ = static_cast<int>(m.position.size());
+  nA_ = s.nAlter();
   for (int d = 0; d < nT_; ++d) {
     pos_[d] = column(s.alter, m.position[d], "alterable");
     if (pos_[d] > 2) throw std::logic_error("the model's motion: positions are among x y z");
@@ -180,6 +188,9 @@ void Integrator::resolve(const Schema& s) {
   for (std::size_t k = 0; nR_ && k < nq; ++k)
     quat_[k] = column(s.alter, m.orientation[k], "alterable");
   if (rotation_ == Rotation::Planar) pos_[nT_] = quat_[0];
+  // Every integ column a force or moment, in order: the watch sweeps them as one array.
+  forcesOnly_ = s.nInteg() == nT_ + nR_;
+  for (int d = 0; d < nT_ + nR_; ++d) forcesOnly_ &= frc_[d] == d;
   resolved_ = true;
 }
 
@@ -271,56 +282,152 @@ void Integrator::step(Context& ctx) {
   const bool held = L.held(tNow);
   if (held && L.holdDampingRatio > 0 && holdDamping_ < 0) holdDamping_ = rayleighDamping(ctx, fNow);
   const double c = damping_ + (held && holdDamping_ > 0 ? holdDamping_ : 0.0);
-  const int nLinear = nT_ + (rotation_ == Rotation::Planar ? 1 : 0);
   const long nOwned = static_cast<long>(n);
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < nOwned; ++i) {
-    double* a = P.alter(i);
-    const double* X = P.fixed(i);
-    const double* F = P.integ(i);
-    const Body& b = bodies_[i];
-    const double invM = 1 / b.mass, invI = 1 / b.inertia;
-    for (int d = 0; d < nLinear; ++d) {
-      const bool rot = d >= nT_;
-      const int p = pos_[d], v = vel_[d];
-      const double ref = rot ? 0.0 : X[p];
-      switch (b.constraint[d]) {
-        case Constraint::Prescribed: {
-          const double target = ref + b.value[d] * fNext;
-          a[v] = (target - a[p]) / h;
-          a[p] = target;
-          continue;
-        }
-        case Constraint::KeepVelocity:
-          break;
-        default: {
-          const double inv = rot ? invI : invM;
-          double acc = perMass_ && !rot ? F[frc_[d]] + b.load[d] * fNow * inv
-                                        : (F[frc_[d]] + b.load[d] * fNow) * inv;
-          acc -= c * a[v];
-          a[v] += acc * kick;
-        }
-      }
-      a[p] += a[v] * h;
-      if (b.constraint[d] == Constraint::Resting && a[p] < ref) {
-        a[p] = ref;  // on the support: no penetration, no bounce
-        a[v] = 0;
-      }
+  Watch* const w = watch_;
+  watch_ = nullptr;
+#pragma omp parallel
+  {
+    Watch mine;  // this thread's share of the watch
+    if (w) mine.tracked = w->tracked;
+    // In blocks, each looked at by the watch while it is in cache.
+    constexpr long kBlock = 128;
+    const long nBlocks = (nOwned + kBlock - 1) / kBlock;
+#pragma omp for schedule(static) nowait
+    for (long k = 0; k < nBlocks; ++k) {
+      const long begin = k * kBlock, end = std::min(nOwned, begin + kBlock);
+      for (long i = begin; i < end; ++i)
+        advance(P, static_cast<std::size_t>(i), h, kick, fNow, fNext, c);
+      if (w) seeRange(P, static_cast<std::size_t>(begin), static_cast<std::size_t>(end), h, mine);
     }
-    if (rotation_ != Rotation::Spatial) continue;
-    Vec phi;
-    for (int k = 0; k < 3; ++k) {
-      const int d = nT_ + k, v = vel_[d];
-      if (b.constraint[d] == Constraint::Prescribed) {
-        a[v] = b.value[d] * (fNext - fNow) / h;
-      } else if (b.constraint[d] == Constraint::Free) {
-        const double acc = (F[frc_[d]] + b.load[d] * fNow) * invI - c * a[v];
+    if (w) {
+#pragma omp critical(pdq_integrator_watch)
+      merge(P, mine, *w);
+    }
+  }
+  if (w) w->done = true;
+}
+
+void Integrator::advance(Particles& P, std::size_t i, double h, double kick, double fNow,
+                         double fNext, double c) const {
+  const int nLinear = nT_ + (rotation_ == Rotation::Planar ? 1 : 0);
+  double* a = P.alter(i);
+  const double* X = P.fixed(i);
+  const double* F = P.integ(i);
+  const Body& b = bodies_[i];
+  const double invM = 1 / b.mass, invI = 1 / b.inertia;
+  for (int d = 0; d < nLinear; ++d) {
+    const bool rot = d >= nT_;
+    const int p = pos_[d], v = vel_[d];
+    const double ref = rot ? 0.0 : X[p];
+    switch (b.constraint[d]) {
+      case Constraint::Prescribed: {
+        const double target = ref + b.value[d] * fNext;
+        a[v] = (target - a[p]) / h;
+        a[p] = target;
+        continue;
+      }
+      case Constraint::KeepVelocity:
+        break;
+      default: {
+        const double inv = rot ? invI : invM;
+        double acc = perMass_ && !rot ? F[frc_[d]] + b.load[d] * fNow * inv
+                                      : (F[frc_[d]] + b.load[d] * fNow) * inv;
+        acc -= c * a[v];
         a[v] += acc * kick;
       }
-      phi[k] = a[v] * h;
     }
-    turn(P, i, phi.data());
+    a[p] += a[v] * h;
+    if (b.constraint[d] == Constraint::Resting && a[p] < ref) {
+      a[p] = ref;  // on the support: no penetration, no bounce
+      a[v] = 0;
+    }
   }
+  if (rotation_ != Rotation::Spatial) return;
+  Vec phi;
+  for (int k = 0; k < 3; ++k) {
+    const int d = nT_ + k, v = vel_[d];
+    if (b.constraint[d] == Constraint::Prescribed) {
+      a[v] = b.value[d] * (fNext - fNow) / h;
+    } else if (b.constraint[d] == Constraint::Free) {
+      const double acc = (F[frc_[d]] + b.load[d] * fNow) * invI - c * a[v];
+      a[v] += acc * kick;
+    }
+    phi[k] = a[v] * h;
+  }
+  turn(P, i, phi.data());
+}
+
+bool Integrator::notFinite(const Particles& P, std::size_t i) const {
+  const double* a = P.alter(i);
+  const double* F = P.integ(i);
+  std::uint64_t bits = 0;
+  for (int k = 0; k < nA_; ++k) bits |= notFiniteBit(a[k]);
+  for (int d = 0; d < nT_ + nR_; ++d) bits |= notFiniteBit(F[frc_[d]]);
+  return (bits >> 63) != 0;
+}
+
+// The move v Δt of owned particle i (its square), its components in `step`.
+inline double moveOf(const Particles& P, std::size_t i, double h, int nT, const int* pos,
+                     const int* vel, std::array<double, 3>& step) {
+  const double* a = P.alter(i);
+  double m = 0;
+  for (int d = 0; d < nT; ++d) {
+    step[pos[d]] = a[vel[d]] * h;
+    m += step[pos[d]] * step[pos[d]];
+  }
+  return m;
+}
+
+void Integrator::seeRange(const Particles& P, std::size_t begin, std::size_t end, double h,
+                          Watch& w) const {
+  if (begin >= end) return;
+  // Rows are contiguous: one branch-free sweep over the range's attributes (and its forces
+  // when every integ column is one), in cache since the step has just moved them.
+  std::uint64_t bits = 0;
+  const double* a = P.alter(begin);
+  const std::size_t nAll = (end - begin) * static_cast<std::size_t>(nA_);
+  for (std::size_t k = 0; k < nAll; ++k) bits |= notFiniteBit(a[k]);
+  if (forcesOnly_) {
+    const double* f = P.integ(begin);
+    const std::size_t nF = (end - begin) * static_cast<std::size_t>(nT_ + nR_);
+    for (std::size_t k = 0; k < nF; ++k) bits |= notFiniteBit(f[k]);
+  } else {
+    for (std::size_t i = begin; i < end; ++i)
+      for (int d = 0; d < nT_ + nR_; ++d) bits |= notFiniteBit(P.integ(i)[frc_[d]]);
+  }
+  w.nonFinite |= (bits >> 63) != 0;
+  std::array<double, 3> step{};
+  double most = 0;
+  for (std::size_t i = begin; i < end; ++i)
+    most = std::max(most, moveOf(P, i, h, nT_, pos_.data(), vel_.data(), step));
+  if (w.tracked >= begin && w.tracked < end) {
+    moveOf(P, w.tracked, h, nT_, pos_.data(), vel_.data(), w.trackedStep);
+    w.sawTracked = true;
+  }
+  // Which particle: rarely needed (the largest move so far seldom grows), so looked for
+  // only then. Of equal moves the largest ID, so that neither the grid nor the threads
+  // choose.
+  if (most == 0 || most < w.most) return;
+  for (std::size_t i = begin; i < end; ++i) {
+    const double m = moveOf(P, i, h, nT_, pos_.data(), vel_.data(), step);
+    if (m > w.most || (m == w.most && P.gid(i) > P.gid(w.fastest)))
+      w.most = m, w.fastest = i, w.fastestStep = step;
+  }
+}
+
+void Integrator::merge(const Particles& P, const Watch& part, Watch& w) {
+  w.nonFinite |= part.nonFinite;
+  if (part.sawTracked) w.trackedStep = part.trackedStep, w.sawTracked = true;
+  if (part.most > w.most ||
+      (part.most == w.most && part.most > 0 && P.gid(part.fastest) > P.gid(w.fastest)))
+    w.most = part.most, w.fastest = part.fastest, w.fastestStep = part.fastestStep;
+}
+
+void Integrator::see(Context& ctx, Watch& w) {
+  Particles& P = ctx.particles;
+  if (!resolved_) resolve(P.schema());
+  seeRange(P, 0, P.owned(), ctx.dt(), w);
+  w.done = true;
 }
 
 }  // namespace pdq

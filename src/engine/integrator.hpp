@@ -144,6 +144,29 @@ class Integrator {
   // Advances the owned particles from step n−1 to step n = ctx.step(), with the forces of
   // step n−1 in the integ table.
   void step(Context& ctx);
+
+  // What the engine's instability checks (engine/simulation.cpp) need of a step, gathered
+  // while the step moves each particle, its data at hand: whether any owned particle's
+  // alterable attribute or force is not finite, the largest move v Δt (the move the step
+  // made) and what the particle followed from the step before moved now.
+  static constexpr std::size_t kNoParticle = static_cast<std::size_t>(-1);
+  struct Watch {
+    std::size_t tracked = kNoParticle;  // in: an owned particle to follow, or none
+    bool done = false;                  // out: filled by step() or see()
+    bool nonFinite = false;
+    double most = 0;                      // the square of the largest move
+    std::size_t fastest = kNoParticle;    // whose move it is (of equal moves the largest ID)
+    std::array<double, 3> fastestStep{};  // its move
+    std::array<double, 3> trackedStep{};  // the followed particle's move
+    bool sawTracked = false;
+  };
+  // The next step() fills `w` (which must live until then).
+  void watchNextStep(Watch* w) { watch_ = w; }
+  // The same for a step made by a model's own integration (the velocities being v(n+½)).
+  void see(Context& ctx, Watch& w);
+  // Whether any alterable attribute or force (moment) of owned particle i is not finite
+  // (after the first step or see()).
+  bool notFinite(const Particles& P, std::size_t i) const;
   // The owned particles changed (a shuffle): bodies are asked for again before the next step.
   void particlesMoved() { haveBodies_ = false; }
   // State kept between steps, saved in restart files.
@@ -190,15 +213,23 @@ class Integrator {
   double dofForce(const Particles& P, std::size_t i, int d, double factor) const;
   // Turns the spatial orientation of owned particle i by the rotation vector phi.
   void turn(Particles& P, std::size_t i, const double phi[3]) const;
+  // Owned particle i's step (kick, the loads at fNow, damping c; prescribed values at fNext).
+  void advance(Particles& P, std::size_t i, double h, double kick, double fNow, double fNext,
+               double c) const;
+  // Adds owned particles [begin, end), just moved by a step of h, to `w` (one thread's
+  // share).
+  void seeRange(const Particles& P, std::size_t begin, std::size_t end, double h, Watch& w) const;
+  static void merge(const Particles& P, const Watch& part, Watch& w);
 
   Model& model_;
-  bool resolved_ = false, haveBodies_ = false, perMass_ = false;
+  bool resolved_ = false, haveBodies_ = false, perMass_ = false, forcesOnly_ = false;
   Rotation rotation_ = Rotation::None;
   double damping_ = 0;
-  int nT_ = 0, nR_ = 0;
+  int nT_ = 0, nR_ = 0, nA_ = 0;
   std::array<int, 6> pos_{}, vel_{}, frc_{};  // per DOF (a planar angle is a position)
   std::array<int, 4> quat_{};                 // orientation columns
   std::vector<Body> bodies_;
+  Watch* watch_ = nullptr;
   double holdDamping_ = -1;  // 2 ζ_h ω₁ once computed
   // Quasi-static: ω_max² of M⁻¹K (the fictitious masses' scale), computed once at the first
   // load step, and the iterations done so far; both saved in restart files.

@@ -2,6 +2,7 @@
 // Outputs written during a run (restart files, time histories, visual output). Each is
 // called on every rank at its steps and gathers what it needs through the engine.
 #include <string>
+#include <vector>
 
 #include "engine/comm.hpp"
 #include "engine/context.hpp"
@@ -17,6 +18,9 @@ struct OutputContext {
   const std::string& outDir;
   long step;
   double setupDt;  // Simulation::setupDt
+  // The instability checks' state, saved in restart files with the integrator's (when an
+  // output that captures the state is due).
+  std::vector<double> checks = {};
 };
 
 class Output {

@@ -8,11 +8,84 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "engine/atomic_file.hpp"
 #include "engine/error.hpp"
 
 namespace pdq {
+
+namespace {
+
+// A particle's move in a step relative to a partner it is still bonded to (squares).
+struct Jump {
+  double relative = -1, own = 0;  // the relative move, and the particle's own
+  Gid id = 0, partner = 0;        // the particle (of the two, the one that moved more)
+};
+
+// The largest such move, looked for from the owned particles that moved more than `half`
+// (of a relative move of 2 × half, one of the two moved at least half); of equal ones the
+// larger IDs, so that the grid does not choose. `vel`: the translations' velocity columns,
+// the partners' (ghosts' too) this step's.
+Jump largestJump(const Particles& P, const Bonds& B, const std::vector<int>& vel, double h,
+                 double half) {
+  auto moved = [&](std::size_t i) {
+    double m = 0;
+    for (int c : vel) m += (P.alter(i)[c] * h) * (P.alter(i)[c] * h);
+    return m;
+  };
+  Jump best;
+  for (std::size_t i = 0; i < P.owned(); ++i) {
+    const double own = moved(i);
+    if (!(own > half * half)) continue;
+    for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+      if (!B.alive(b) || B.partner(b) < 0) continue;
+      const auto j = static_cast<std::size_t>(B.partner(b));
+      double r = 0;
+      for (int c : vel)
+        r += ((P.alter(i)[c] - P.alter(j)[c]) * h) * ((P.alter(i)[c] - P.alter(j)[c]) * h);
+      const double other = moved(j);
+      const Gid gi = P.gid(i), gj = B.partnerGid(b);
+      const bool first = own > other || (own == other && gi > gj);
+      const Jump J{r, first ? own : other, first ? gi : gj, first ? gj : gi};
+      if (J.relative > best.relative ||
+          (J.relative == best.relative &&
+           (J.id > best.id || (J.id == best.id && J.partner > best.partner))))
+        best = J;
+    }
+  }
+  return best;
+}
+
+// A bond alive whose two particles moved apart (or together) by more than the horizon in
+// one step: its length changed by more than its own, which no step that resolves the
+// motion makes. Only bonds alive count: the pieces of a broken body fly apart freely, and
+// a piece flies whole (however fast) without its bonds changing length. The horizon, not
+// the cells (wider on fewer ranks), keeps the verdict the same on any grid. Called after
+// the halo exchange, so that the partners' velocities are this step's; collective. Returns
+// the particle to name and what it did, or nothing.
+std::optional<std::pair<Gid, std::string>> bondJump(const Particles& P, const Bonds& B,
+                                                    Model& model, Comm& comm, double h) {
+  const double limit = model.horizon(), none = -std::numeric_limits<double>::infinity();
+  std::vector<int> vel;
+  for (const auto& n : model.motion().velocity) vel.push_back(P.schema().alterIndex(n));
+  const Jump j = largestJump(P, B, vel, h, limit / 2);
+  const double mine = j.relative >= 0 ? std::sqrt(j.relative) : none;
+  const double r = comm.max(mine);
+  if (!(r > limit)) return std::nullopt;
+  const double id = comm.max(mine == r ? static_cast<double>(j.id) : none);
+  const bool it = mine == r && static_cast<double>(j.id) == id;
+  const double partner = comm.max(it ? static_cast<double>(j.partner) : none);
+  const double own =
+      comm.max(it && static_cast<double>(j.partner) == partner ? std::sqrt(j.own) : none);
+  std::ostringstream os;
+  os << "moved " << own << " in the last step, " << r << " relative to particle "
+     << static_cast<Gid>(partner) << ", to which it is still bonded: more than the horizon "
+     << limit << ", a bond's length changed by more than its own in one step";
+  return std::make_pair(static_cast<Gid>(id), os.str());
+}
+
+}  // namespace
 
 Simulation::Simulation(std::unique_ptr<Model> model, ParticleSet particles, RunConfig config,
                        Comm& comm)
@@ -116,6 +189,7 @@ void Simulation::setup() {
   ctx_->setIntegrator(integrator_.get());
   ctx_->setLoading(cfg_.loading);
   step_ = cfg_.firstStep;
+  checkedStep_ = step_;
   ctx_->setStep(step_);
   ctx_->setSteps(cfg_.steps);
   try {
@@ -161,6 +235,7 @@ void Simulation::setup() {
     if (!restart_->adoptDt || restart_->setupDt == setupDt_) ctx_->setDt(restart_->dt);
     integrator_->setState(restart_->integrator);
     model_->loadState(restart_->model);
+    restoreChecks(restart_->checks);
   }
   restart_.reset();
   cube_->halo();  // setup and prepare may have changed alterable attributes
@@ -211,8 +286,6 @@ void Simulation::setup() {
   if (comm_.root())
     for (const auto& name : removeStrayTemporaries(cfg_.outDir))
       debug_ << "removed " << name << ", left by a run killed while writing it\n";
-  keepPositions();
-  checkedStep_ = step_;
   setUp_ = true;
   if (cfg_.solver.quasiStatic && resumed_ && comm_.root()) {
     // A restarted run continues the curve: the rows up to its restart step.
@@ -392,27 +465,36 @@ bool Simulation::advance() {
     Timers::Scope t(timers_, Phase::Force);
     model_->force(*ctx_);
   }
+  bool saving = false, asked = false;  // restart files are due at this step
+  for (const auto& o : outputs_)
+    saving |= o->capturesState() && (o->due(step_) || (step_ == cfg_.steps && o->atEnd()));
+  // Instability is looked for before anything is saved, so no restart file holds it. The
+  // integrator gathers what the checks need as it moves each particle.
+  const bool checkMoves = cfg_.checkEvery > 0 && step_ % cfg_.checkEvery == 0;
+  const bool check = checkMoves || saving;
+  Integrator::Watch watch;
+  if (check) {
+    watch.tracked = step_ - checkedStep_ == 1 ? tracked_ : kNone;
+    integrator_->watchNextStep(&watch);
+  }
   {
     Timers::Scope t(timers_, Phase::Integrate);
     model_->integrate(*ctx_);
+    integrator_->watchNextStep(nullptr);
+    if (check && !watch.done) integrator_->see(*ctx_, watch);  // the model's own integration
   }
-  bool saving = false, asked = false;  // restart files are due at this step
-  for (const auto& o : outputs_) {
-    saving |= o->capturesState() && (o->due(step_) || (step_ == cfg_.steps && o->atEnd()));
+  for (const auto& o : outputs_)
     if (o->timed()) asked |= o->requested();
-  }
-  // Instability is looked for before anything is saved, so no restart file holds it.
-  const bool check = (cfg_.checkEvery > 0 && step_ % cfg_.checkEvery == 0) || saving;
-  const bool checkMoves = cfg_.checkEvery > 0 && step_ % cfg_.checkEvery == 0;
+  if (checkMoves) takeMoves(watch);
   // One reduction a step, when anything needs one: a stop asked for from outside, how far
   // particles moved since the last shuffle, the first unstable particle, a timed output
-  // asked for and the largest distance moved per step since the last check.
+  // asked for and the largest distance moved in the step.
   const double none = -std::numeric_limits<double>::infinity();
   std::vector<double> probe{stopCheck_ ? static_cast<double>(stopCheck_()) : 0.0,
                             model_->shuffles() ? cube_->maxDisplacementSinceRebuild() : 0.0,
-                            check ? firstUnstable() : none,
+                            check && watch.nonFinite ? firstUnstable() : none,
                             asked ? 1.0 : 0.0,
-                            checkMoves ? (measureMoves(), localMove_) : 0.0,
+                            checkMoves ? localMove_ : 0.0,
                             checkMoves && bounced_ ? 1.0 : 0.0};
   if (stopCheck_ || model_->shuffles() || check || timedOutputs_) probe = comm_.max(probe);
   requestedNow_ = probe[3] > 0;
@@ -445,9 +527,8 @@ bool Simulation::advance() {
     cube_->shuffle(step_);
     integrator_->particlesMoved();
     model_->neighboursChanged(*ctx_);
-    // The particles changed order (and periodic ones wrapped): moves count from here.
-    keepPositions();
-    checkedStep_ = step_;
+    // The particles changed order: the particle followed is lost.
+    tracked_ = kNone;
     stats_.shuffles++;
     stats_.maxShuffleMessages = std::max(stats_.maxShuffleMessages, cube_->stats().shuffleMessages);
   } else {
@@ -457,6 +538,9 @@ bool Simulation::advance() {
     stats_.haloBytes = cube_->stats().haloBytes;
     stats_.haloWallParticles = cube_->stats().haloWallParticles;
   }
+  if (checkMoves && probe[4] > model_->horizon() / 2)
+    if (const auto jump = bondJump(particles_, bonds_, *model_, comm_, ctx_->dt()))
+      reportInstability(jump->first, jump->second);
   return endStep(interrupted);
 }
 
@@ -485,69 +569,65 @@ void Simulation::run() {
 }
 
 double Simulation::firstUnstable() const {
-  const std::size_t n = particles_.owned();
-  const int nA = particles_.schema().nAlter(), nI = particles_.schema().nInteg();
-  if (n == 0) return -std::numeric_limits<double>::infinity();
-  // x - x is 0 for a finite x and NaN otherwise: one sweep over the tables, no branches.
-  // Four sums, so the additions do not wait on each other.
-  double z[4] = {0, 0, 0, 0};
-  const double* a = particles_.alter(0);
-  const std::size_t nAll = n * nA;
-  for (std::size_t k = 0; k < nAll; ++k) z[k % 4] += a[k] - a[k];
-  const double* f = particles_.integ(0);
-  for (int c : forceColumns_)
-    for (std::size_t i = 0; i < n; ++i) z[i % 4] += f[i * nI + c] - f[i * nI + c];
-  if (z[0] + z[1] + z[2] + z[3] == 0) return -std::numeric_limits<double>::infinity();
-  bool any = false;
-  Gid first = 0;  // owned particles are not in ID order: the smallest ID is reported
-  for (std::size_t i = 0; i < n; ++i) {
-    bool bad = false;
-    for (int k = 0; k < nA; ++k) bad |= !std::isfinite(particles_.alter(i)[k]);
-    for (int k : forceColumns_) bad |= !std::isfinite(particles_.integ(i)[k]);
-    if (bad) first = any ? std::min(first, particles_.gid(i)) : particles_.gid(i);
-    any |= bad;
-  }
-  return -static_cast<double>(first);
+  // Owned particles are not in ID order: the smallest ID is reported.
+  double first = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < particles_.owned(); ++i)
+    if (integrator_->notFinite(particles_, i))
+      first = std::max(first, -static_cast<double>(particles_.gid(i)));
+  return first;
 }
 
-void Simulation::measureMoves() {
-  const std::size_t n = particles_.owned();
-  const bool consecutive = step_ - checkedStep_ == 1;
-  double most = 0;
-  movedMost_ = 0;
+void Simulation::takeMoves(const Integrator::Watch& w) {
+  movedMost_ = w.fastest;
+  mostStep_ = w.fastestStep;
+  localMost_ = w.most;
+  localMove_ = std::sqrt(w.most);
   bounced_ = false;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double* x = particles_.alter(i);
-    double* kept = &checkedPos_[3 * i];
-    const double dx = x[0] - kept[0], dy = x[1] - kept[1], dz = x[2] - kept[2];
-    const double d = dx * dx + dy * dy + dz * dz;
-    // Of equal moves the largest ID, as over the ranks, so the grid does not choose.
-    if (d > most || (d == most && particles_.gid(i) > particles_.gid(movedMost_))) {
-      most = d, movedMost_ = i;
-      mostStep_ = {dx, dy, dz};
-    }
-    if (i == tracked_ && consecutive) {
-      const double back = dx * trackedStep_[0] + dy * trackedStep_[1] + dz * trackedStep_[2];
-      bounced_ = back < 0 && d >= kGrowth * kGrowth * trackedMove_;
-    }
-    std::copy_n(x, 3, kept);
+  if (w.sawTracked) {
+    const auto& s = w.trackedStep;
+    const double back = s[0] * trackedStep_[0] + s[1] * trackedStep_[1] + s[2] * trackedStep_[2];
+    const double d = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
+    bounced_ = back < 0 && d >= kGrowth * kGrowth * trackedMove_;
   }
-  const double steps = static_cast<double>(step_ - checkedStep_);
   checkedStep_ = step_;
-  localMove_ = steps > 0 ? std::sqrt(most) / steps : 0.0;
-  localMost_ = most;
 }
 
-void Simulation::keepPositions() {
-  const std::size_t n = particles_.owned();
-  checkedPos_.resize(3 * n);
-  for (std::size_t i = 0; i < n; ++i) std::copy_n(particles_.alter(i), 3, &checkedPos_[3 * i]);
+std::vector<double> Simulation::checkState() {
+  // The particle followed, from its owner (-1: none).
+  const double none = -std::numeric_limits<double>::infinity();
+  const bool mine = tracked_ != kNone;
+  std::vector<double> t{mine ? static_cast<double>(particles_.gid(tracked_)) : none,
+                        mine ? trackedStep_[0] : none, mine ? trackedStep_[1] : none,
+                        mine ? trackedStep_[2] : none, mine ? trackedMove_ : none};
+  t = comm_.max(t);
+  if (t[0] == none) t = {-1, 0, 0, 0, 0};
+  return {static_cast<double>(growing_),
+          growthFrom_,
+          lastMove_,
+          static_cast<double>(checkedStep_),
+          t[0],
+          t[1],
+          t[2],
+          t[3],
+          t[4]};
+}
+
+void Simulation::restoreChecks(const std::vector<double>& saved) {
+  if (saved.empty()) return;  // a restart file written before the checks' state was saved
+  growing_ = static_cast<int>(saved[0]);
+  growthFrom_ = saved[1];
+  lastMove_ = saved[2];
+  checkedStep_ = static_cast<long>(saved[3]);
   tracked_ = kNone;
+  for (std::size_t i = 0; i < particles_.owned(); ++i)
+    if (saved[4] >= 0 && static_cast<double>(particles_.gid(i)) == saved[4]) tracked_ = i;
+  trackedStep_ = {saved[5], saved[6], saved[7]};
+  trackedMove_ = saved[8];
 }
 
 void Simulation::checkMotion(double move, bool bounced) {
   const double none = -std::numeric_limits<double>::infinity();
-  const bool mine = particles_.owned() > 0 && localMove_ == move;
+  const bool mine = movedMost_ != kNone && localMove_ == move;
   auto mover = [&] {
     return static_cast<Gid>(
         comm_.max(mine ? static_cast<double>(particles_.gid(movedMost_)) : none));
@@ -564,7 +644,7 @@ void Simulation::checkMotion(double move, bool bounced) {
   }
   lastMove_ = move;
   // Follow the fastest particle to the next step (on the rank that owns it).
-  tracked_ = mine ? movedMost_ : kNone;
+  tracked_ = mine && move > 0 ? movedMost_ : kNone;
   trackedStep_ = mostStep_;
   trackedMove_ = localMost_;
   if (growing_ >= kGrowthSteps) {
@@ -613,13 +693,15 @@ void Simulation::reportInstability(Gid id, const std::string& what) {
 void Simulation::writeOutputs(bool last, bool checkpoint) {
   Timers::Scope t(timers_, Phase::Output);
   OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_, setupDt_};
+  auto due = [&](const Output& o) {
+    return o.due(step_) || (last && o.atEnd()) || (checkpoint && o.capturesState()) ||
+           (requestedNow_ && o.timed());
+  };
   bool saved = false;
+  for (auto& o : outputs_) saved |= o->capturesState() && due(*o);
+  if (saved) oc.checks = checkState();
   for (auto& o : outputs_)
-    if (o->due(step_) || (last && o->atEnd()) || (checkpoint && o->capturesState()) ||
-        (requestedNow_ && o->timed())) {
-      o->write(oc);
-      saved |= o->capturesState();
-    }
+    if (due(*o)) o->write(oc);
   // debug.txt and timing.out are brought up to date with each restart state.
   if (saved) writeLogs();
 }

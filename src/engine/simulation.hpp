@@ -17,6 +17,7 @@
 #include "engine/comm.hpp"
 #include "engine/context.hpp"
 #include "engine/decomposition.hpp"
+#include "engine/integrator.hpp"
 #include "engine/model.hpp"
 #include "engine/output.hpp"
 #include "engine/particle_set.hpp"
@@ -59,6 +60,7 @@ struct RestartState {
   double setupDt = 0;
   bool adoptDt = false;
   std::vector<double> integrator, model;
+  std::vector<double> checks;  // the instability checks' (Simulation::checkState), if saved
 };
 
 struct StepStats {
@@ -116,12 +118,14 @@ class Simulation {
   Domain makeDomain() const;
   void writeOutputs(bool last, bool checkpoint = false);
   double firstUnstable() const;  // -(smallest unstable particle's ID) on this rank, or -inf
-  // The largest distance an owned particle moved since the last check, per step
-  // (localMove_), which particle moved it (movedMost_), and whether the particle followed
-  // from the step before went back, further (bounced_); the positions are kept for the
-  // next check.
-  void measureMoves();
-  void keepPositions();  // the owned particles' positions, for the next check
+  // From what the integrator saw of the step: the largest move of an owned particle
+  // (localMove_), which particle made it (movedMost_), and whether the particle followed
+  // from the step before went back, further (bounced_).
+  void takeMoves(const Integrator::Watch& w);
+  // The checks' state (the same on every rank; collective), as restart files save it, and
+  // back from them.
+  std::vector<double> checkState();
+  void restoreChecks(const std::vector<double>& saved);
   // The checks of motion (every rank alike, `move` and `bounced` those of all ranks).
   void checkMotion(double move, bool bounced);
   [[noreturn]] void reportInstability(Gid id, const std::string& what);
@@ -152,11 +156,10 @@ class Simulation {
   long step_ = 0;
   double slack_ = 0, setupDt_ = 0;
   bool timedOutputs_ = false, requestedNow_ = false;
-  std::vector<int> forceColumns_;   // the motion's force and moment columns (integ)
-  std::vector<double> checkedPos_;  // owned particles' positions at the last check
-  long checkedStep_ = 0;
-  static constexpr std::size_t kNone = std::numeric_limits<std::size_t>::max();
-  std::size_t movedMost_ = 0;  // the owned particle that moved most since the last check
+  std::vector<int> forceColumns_;  // the motion's force and moment columns (integ)
+  long checkedStep_ = 0;           // the step of the last check of motion
+  static constexpr std::size_t kNone = Integrator::kNoParticle;
+  std::size_t movedMost_ = kNone;  // the owned particle that moved most in the checked step
   std::array<double, 3> mostStep_{};
   double localMove_ = 0, localMost_ = 0;  // its move per step, and its square
   bool bounced_ = false;

@@ -113,6 +113,7 @@ RestartTexts restartTexts(OutputContext& out, bool bondRows) {
     row("dt", {out.ctx.dt()});
     row("integrator", out.ctx.integrator().state());
     row("model", out.model.saveState());
+    if (!out.checks.empty()) row("checks", out.checks);
     f += "bonds " + std::to_string(nBondsTotal) + "\n";  // so a lost or cut bonds file is seen
   }
   if (withFixed) {
@@ -209,12 +210,16 @@ static void readState(const std::string& text, const std::string& path, RestartS
       st.integrator = values;
     } else if (key == "model") {
       st.model = values;
+    } else if (key == "checks" && values.size() == 9) {
+      st.checks = values;
     } else if (key == "bonds" && values.size() == 1 && values[0] >= 0 &&
                values[0] == static_cast<double>(static_cast<long>(values[0]))) {
       bonds = static_cast<long>(values[0]);
     } else {
-      throw InputError(path, n,
-                       "expected 'dt VALUE', 'integrator VALUES', 'model VALUES' or 'bonds N'");
+      throw InputError(
+          path, n,
+          "expected 'dt VALUE', 'integrator VALUES', 'model VALUES', 'checks' and 9 values "
+          "or 'bonds N'");
     }
   }
   if (!dt) throw InputError(path, 0, "the state file has no 'dt' line");

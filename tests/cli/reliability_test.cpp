@@ -7,7 +7,9 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <regex>
+#include <sstream>
 #include <thread>
 
 #include "pdq_process.hpp"
@@ -208,8 +210,10 @@ namespace {
 // the standard error.
 std::string expectUnstable(const std::string& name, int ranks,
                            const std::vector<std::pair<std::string, std::string>>& edits,
-                           const std::string& pattern, const std::string& extra = "") {
+                           const std::string& pattern, const std::string& extra = "",
+                           std::string* folder = nullptr) {
   const std::string dir = freshDir(name + "_np" + std::to_string(ranks));
+  if (folder) *folder = dir;
   const std::string sc = springCase(dir, 3000, extra);
   edit(sc, "restart_every = 10", "restart_every = 1\ncheckpoint_every = 1\ncheckpoints_kept = 3");
   for (const auto& [from, to] : edits) edit(sc, from, to);
@@ -259,6 +263,25 @@ TEST(Reliability, NonFiniteValuesStopTheRunInTheirStep) {
   }
 }
 
+namespace {
+
+// Unbreakable springs stepped a little above their stable step (about 0.75), started a
+// thousand times slower than the breaking lattice, so that the motion, growing step by
+// step, is caught while it is still small: before two bonded particles move apart by the
+// horizon in a step.
+std::vector<std::pair<std::string, std::string>> growingSprings() {
+  return {{"dt = 0.05", "dt = 0.8"},
+          {"critical_stretch = 0.02", "critical_stretch = 0"},
+          {"value = -0.375", "value = -0.000375"},
+          {"gradient = [0.05, 0, 0]", "gradient = [0.00005, 0, 0]"},
+          {"value = -0.0375", "value = -0.0000375"},
+          {"gradient = [0.005, 0, 0]", "gradient = [0.000005, 0, 0]"},
+          {"value = -0.0175", "value = -0.0000175"},
+          {"gradient = [0, 0.005, 0]", "gradient = [0, 0.000005, 0]"}};
+}
+
+}  // namespace
+
 TEST(Reliability, MotionGrowingStepByStepStopsTheRun) {
   // Unbreakable springs stepped a little above their stable step (about 0.75): the fastest
   // particle goes back and forth, further each step, and is stopped before any value is
@@ -266,11 +289,51 @@ TEST(Reliability, MotionGrowingStepByStepStopsTheRun) {
   for (int ranks : {0, 2}) {
     SCOPED_TRACE(ranks);
     const std::string err = expectUnstable(
-        "growing", ranks,
-        {{"dt = 0.05", "dt = 0.8"}, {"critical_stretch = 0.02", "critical_stretch = 0"}},
+        "growing", ranks, growingSprings(),
         R"(particle \d+ at \([-0-9.e]+, [-0-9.e]+, 0\) moved [0-9.e+-]+ in the last step: the fastest particle has gone back and forth at every step since step \d+)");
     EXPECT_THAT(err, HasSubstr("so the motion grows without bound"));
     EXPECT_THAT(err, Not(HasSubstr("non-finite")));
+  }
+}
+
+TEST(Reliability, BondedParticleJumpingFurtherThanTheHorizonStopsTheRun) {
+  // One particle of the spring lattice (horizon 1.5) started at vx = 100: at dt = 0.05 it
+  // moves 5 in the first step, away from partners it is still bonded to; stopped in that
+  // step, on one rank and on two (its partners ghosts there, some of them).
+  for (int ranks : {0, 2}) {
+    SCOPED_TRACE(ranks);
+    const std::string err = expectUnstable(
+        "jump", ranks, {},
+        R"(particle 53 at \(10, 2.99[0-9]*, 0\) moved 5 in the last step, [0-9.]+ relative to particle \d+, to which it is still bonded: more than the horizon 1.5)",
+        "\n[[particles.set]]\nattribute = \"vx\"\nvalue = 100\nx = [5, 5]\ny = [3, 3]\n");
+    EXPECT_THAT(err, HasSubstr("error: step 1: "));
+  }
+}
+
+TEST(Reliability, GrowthCountIsCheckpointedAndResumedAlike) {
+  // The growing springs stop once the fastest particle has bounced, further each time, at
+  // three steps in a row: the checkpoint of the step before holds a count of two. Resumed
+  // from it (on 1 and 2 ranks) the run stops at the same step with the same words, as a
+  // run that lost the count would not.
+  std::string dir;
+  const std::string err =
+      expectUnstable("growth_resumed", 0, growingSprings(),
+                     R"(particle \d+ at .* so the motion grows without bound)", "", &dir);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(err, m, std::regex(R"(pdq: error: step (\d+): [^\n]*)"))) << err;
+  const std::string stop = m[0];
+  const long at = std::stol(m[1]);
+  char ckpt[64];
+  std::snprintf(ckpt, sizeof ckpt, "/out/checkpoint.%012ld.ckpt", at - 1);
+  EXPECT_THAT(readFile(dir + ckpt), HasSubstr("\nchecks 2 "));
+  for (int ranks : {0, 2}) {
+    SCOPED_TRACE(ranks);
+    const std::string copy = "resumed_np" + std::to_string(ranks);
+    fs::remove_all(dir + "/" + copy);
+    fs::copy(dir + "/out", dir + "/" + copy);
+    const auto r = runPdq({"run", "lattice.toml", "-q", "--resume", copy}, dir, ranks);
+    EXPECT_EQ(r.code, 3) << r.all();
+    EXPECT_THAT(r.err, HasSubstr(stop));
   }
 }
 
@@ -304,6 +367,26 @@ void expectDtWarning(const std::string& dir, const std::string& sc,
   const auto r = runPdq({"run", sc, "-q", "--steps", "2", "--out", "fast"}, dir);
   EXPECT_EQ(r.code, 0) << r.all();
   EXPECT_THAT(r.err, HasSubstr(warning));
+  // The limit is the stable step itself: 1.2 times it is warned of (a run seen to shatter
+  // there), 0.9 times it is not.
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(r.err, m, std::regex(R"(exceeds the stable time step (\S+) s)")))
+      << r.err;
+  const double stable = std::stod(m[1]);
+  std::string now = dt.second.substr(dt.second.find("dt = "));
+  for (const double f : {1.2, 0.9}) {
+    SCOPED_TRACE(f);
+    std::ostringstream next;
+    next << std::setprecision(17) << "dt = " << f * stable;
+    edit(sc, now, next.str());
+    now = next.str();
+    const auto run = runPdq({"run", sc, "-q", "--steps", "2", "--out", "near"}, dir);
+    EXPECT_EQ(run.code, 0) << run.all();
+    if (f > 1)
+      EXPECT_THAT(run.err, HasSubstr("exceeds the stable time step"));
+    else
+      EXPECT_EQ(run.err, "");
+  }
 }
 
 }  // namespace
