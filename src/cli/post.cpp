@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
-#include <regex>
+#include <string_view>
 
 #include "cli/commands.hpp"
 #include "cli/options.hpp"
@@ -28,17 +28,20 @@ namespace {
 
 // The restart file of the highest step in `dir`.
 std::string latestRestart(const std::string& dir, const std::string& input) {
-  static const std::regex name(R"(ParticleAlterAttrs\.(\d+)\.rst)");
+  // ParticleAlterAttrs.<digits>.rst, matched by hand (<regex> is slow to compile).
+  constexpr std::string_view head = "ParticleAlterAttrs.", tail = ".rst";
   std::string best;
   long bestStep = -1;
   std::error_code ec;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
-    std::smatch m;
     const std::string f = e.path().filename().string();
-    if (!std::regex_match(f, m, name)) continue;
+    if (f.size() <= head.size() + tail.size() || !f.starts_with(head) || !f.ends_with(tail))
+      continue;
+    const std::string digits = f.substr(head.size(), f.size() - head.size() - tail.size());
+    if (!std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      continue;
     // A step beyond any run's (more digits than a long holds) is no restart file of pdq's.
     long step = -1;
-    const std::string digits = m[1];
     const auto [end, err] = std::from_chars(digits.data(), digits.data() + digits.size(), step);
     if (err == std::errc() && step > bestStep) {
       bestStep = step;
