@@ -124,21 +124,38 @@ double Comm::sum(ExactSum& acc) const {
   return acc.value();
 }
 
-std::vector<std::vector<char>> Comm::gather(const std::vector<char>& block) const {
-  int n = static_cast<int>(block.size());
-  std::vector<int> counts(size_), displs(size_);
-  MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, mpi(comm_));
-  std::vector<char> all;
-  if (root()) {
-    for (int r = 1; r < size_; ++r) displs[r] = displs[r - 1] + counts[r - 1];
-    all.resize(size_ ? displs[size_ - 1] + counts[size_ - 1] : 0);
+std::vector<char> Comm::gather(const std::vector<char>& block,
+                               std::vector<std::size_t>& starts) const {
+  // Sent rank by rank in pieces under MPI's int count, so that no size is too large.
+  constexpr std::size_t kPiece = std::size_t{1} << 30;
+  constexpr int kTag = 30011;
+  unsigned long n = block.size();
+  std::vector<unsigned long> counts(size_);
+  MPI_Gather(&n, 1, MPI_UNSIGNED_LONG, counts.data(), 1, MPI_UNSIGNED_LONG, 0, mpi(comm_));
+  starts.assign(1, 0);
+  if (!root()) {
+    for (std::size_t at = 0; at < block.size(); at += kPiece)
+      MPI_Send(block.data() + at, static_cast<int>(std::min(kPiece, block.size() - at)), MPI_BYTE,
+               0, kTag, mpi(comm_));
+    return {};
   }
-  MPI_Gatherv(block.data(), n, MPI_BYTE, all.data(), counts.data(), displs.data(), MPI_BYTE, 0,
-              mpi(comm_));
+  for (int r = 0; r < size_; ++r) starts.push_back(starts.back() + counts[r]);
+  std::vector<char> all(starts.back());
+  std::copy(block.begin(), block.end(), all.begin());
+  for (int r = 1; r < size_; ++r)
+    for (std::size_t at = starts[r]; at < starts[r + 1]; at += kPiece)
+      MPI_Recv(all.data() + at, static_cast<int>(std::min(kPiece, starts[r + 1] - at)), MPI_BYTE, r,
+               kTag, mpi(comm_), MPI_STATUS_IGNORE);
+  return all;
+}
+
+std::vector<std::vector<char>> Comm::gather(const std::vector<char>& block) const {
+  std::vector<std::size_t> starts;
+  const std::vector<char> all = gather(block, starts);
   std::vector<std::vector<char>> out;
   if (root())
     for (int r = 0; r < size_; ++r)
-      out.emplace_back(all.begin() + displs[r], all.begin() + displs[r] + counts[r]);
+      out.emplace_back(all.begin() + starts[r], all.begin() + starts[r + 1]);
   return out;
 }
 

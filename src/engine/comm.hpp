@@ -47,6 +47,9 @@ class Comm {
   void exactSum(ExactSum& acc) const;
   // Gathers variable-length byte blocks on rank 0 (empty elsewhere).
   std::vector<std::vector<char>> gather(const std::vector<char>& block) const;
+  // The same blocks in one buffer, rank r's at [starts[r], starts[r + 1]): no copy per block,
+  // for the large ones (a checkpoint's bonds), and no limit on their size.
+  std::vector<char> gather(const std::vector<char>& block, std::vector<std::size_t>& starts) const;
   std::vector<char> broadcast(std::vector<char> data) const;  // from rank 0
   void barrier() const;
   [[noreturn]] void abort(int code) const;

@@ -32,6 +32,10 @@ class Output {
   virtual bool atEnd() const { return false; }
   // True for outputs a run can restart from (the engine shuffles before writing them).
   virtual bool capturesState() const { return false; }
+  // True for what a run stopped early (a signal, the wall-time limit) writes at the step it
+  // stops: the state it is continued from (checkpoints), and nothing slower, so that it
+  // stops promptly.
+  virtual bool writtenOnStop() const { return false; }
   // True for an output also written on wall time (checkpoints every T minutes): then
   // requested() is asked once a step on every rank, and a yes from any rank (combined in
   // the step's one reduction) makes it due at that step on all of them.

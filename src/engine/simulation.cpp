@@ -555,7 +555,7 @@ bool Simulation::endStep(bool interrupted) {
   if (interrupted) {
     ended_ = true;
     debug_ << "stopped early at step " << step_ << " (stop code " << stopCode_
-           << "); restart files written\n";
+           << "); a checkpoint written\n";
   }
   writeOutputs(stop || step_ == cfg_.steps, interrupted);
   return !ended_ && step_ < cfg_.steps;
@@ -690,11 +690,11 @@ void Simulation::reportInstability(Gid id, const std::string& what) {
   throw RunError(os.str());
 }
 
-void Simulation::writeOutputs(bool last, bool checkpoint) {
+void Simulation::writeOutputs(bool last, bool stopped) {
   Timers::Scope t(timers_, Phase::Output);
   OutputContext oc{*ctx_, *model_, comm_, cfg_.outDir, step_, setupDt_};
   auto due = [&](const Output& o) {
-    return o.due(step_) || (last && o.atEnd()) || (checkpoint && o.capturesState()) ||
+    return o.due(step_) || (last && o.atEnd()) || (stopped && o.writtenOnStop()) ||
            (requestedNow_ && o.timed());
   };
   bool saved = false;

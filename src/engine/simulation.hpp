@@ -78,8 +78,9 @@ class Simulation {
 
   // Asked on every rank once a step: 0 to go on, or a positive code to stop early. The
   // largest code over the ranks stops every rank after the same step, with the state
-  // written there by the outputs that capture it (restart files) even where they are not
-  // due; stopCode() then holds it. The cli stops this way on signals and a wall-time limit.
+  // written there by the outputs written on a stop (Output::writtenOnStop: checkpoints)
+  // even where they are not due; stopCode() then holds it. The cli stops this way on signals and a
+  // wall-time limit.
   void setStopCheck(std::function<int()> check) { stopCheck_ = std::move(check); }
   int stopCode() const { return stopCode_; }
 
@@ -116,7 +117,7 @@ class Simulation {
 
  private:
   Domain makeDomain() const;
-  void writeOutputs(bool last, bool checkpoint = false);
+  void writeOutputs(bool last, bool stopped = false);
   double firstUnstable() const;  // -(smallest unstable particle's ID) on this rank, or -inf
   // From what the integrator saw of the step: the largest move of an owned particle
   // (localMove_), which particle made it (movedMost_), and whether the particle followed

@@ -1,17 +1,21 @@
 #include "io/checkpoint.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <queue>
 #include <sstream>
 #include <string_view>
+#include <unordered_map>
 
 #include "engine/atomic_file.hpp"
 #include "engine/checksum.hpp"
 #include "engine/error.hpp"
+#include "engine/particles.hpp"
 #include "io/restart.hpp"
 
 namespace fs = std::filesystem;
@@ -31,12 +35,299 @@ void put(std::string& out, T v) {
   out.append(reinterpret_cast<const char*>(&v), sizeof v);
 }
 
+// --- The bonds in a checkpoint ---------------------------------------------------------
+// Each rank's owned bonds go to rank 0 as one block of bytes, its particles with bonds in
+// ID order, the 8-byte fields first so that they are read in place from the gathered buffer:
+//   u64 particles n | n x u64 ID | n x u64 bond count | m x u64 partner ID |
+//   m x nAttr f64 attributes | m x u8 dead flag, padded to a multiple of 8 bytes
+struct BondBlock {
+  std::size_t n = 0, m = 0;
+  const std::uint64_t *id = nullptr, *count = nullptr, *partner = nullptr;
+  const double* attr = nullptr;
+  const std::uint8_t* dead = nullptr;
+};
+
+std::size_t blockBytes(std::size_t n, std::size_t m, int nAttr) {
+  return 8 * (1 + 2 * n + m + m * nAttr) + (m + 7) / 8 * 8;
+}
+
+BondBlock blockView(const char* p, int nAttr) {
+  BondBlock v;
+  auto u64 = reinterpret_cast<const std::uint64_t*>(p);
+  v.n = u64[0];
+  v.id = u64 + 1;
+  v.count = v.id + v.n;
+  for (std::size_t k = 0; k < v.n; ++k) v.m += v.count[k];
+  v.partner = v.count + v.n;
+  v.attr = reinterpret_cast<const double*>(v.partner + v.m);
+  v.dead = reinterpret_cast<const std::uint8_t*>(v.attr + v.m * nAttr);
+  return v;
+}
+
+std::vector<char> localBondBlock(const Particles& P, const Bonds& B) {
+  const int nA = B.nAttr();
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < P.owned(); ++i)
+    if (B.end(i) > B.begin(i)) order.push_back(i);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return P.gid(a) < P.gid(b); });
+  std::size_t m = 0;
+  for (const std::size_t i : order) m += B.end(i) - B.begin(i);
+  std::vector<char> bytes(blockBytes(order.size(), m, nA));
+  auto u64 = reinterpret_cast<std::uint64_t*>(bytes.data());
+  u64[0] = order.size();
+  std::uint64_t *id = u64 + 1, *count = id + order.size(), *partner = count + order.size();
+  double* attr = reinterpret_cast<double*>(partner + m);
+  auto dead = reinterpret_cast<std::uint8_t*>(attr + m * nA);
+  for (const std::size_t i : order) {
+    const std::size_t b0 = B.begin(i), nb = B.end(i) - b0;
+    *id++ = static_cast<std::uint64_t>(P.gid(i));
+    *count++ = nb;
+    for (std::size_t b = b0; b < b0 + nb; ++b)
+      *partner++ = static_cast<std::uint64_t>(B.partnerGid(b));
+    if (nA) std::memcpy(attr, B.attr(b0), nb * nA * sizeof(double));
+    attr += nb * nA;
+    std::memcpy(dead, B.deadFlags(b0), nb);
+    dead += nb;
+  }
+  return bytes;
+}
+
+void putVarint(std::string& out, std::uint64_t v) {
+  while (v >= 0x80) {
+    out += static_cast<char>(v | 0x80);
+    v >>= 7;
+  }
+  out += static_cast<char>(v);
+}
+
+constexpr int kLiteral = 255;  // an attribute code: its 8 bytes follow
+
+// The values of one attribute column seen most often (up to 255, each more than once):
+// a bond's value is then one byte, its index, and any other value its 8 bytes behind
+// kLiteral. Lattices have few distinct bond lengths and weights; state that varies bond
+// by bond (damage) costs one byte more than raw.
+class Dictionary {
+ public:
+  void count(double v) {
+    const auto k = bits(v);
+    auto it = counts_.find(k);
+    if (it != counts_.end())
+      ++it->second;
+    else if (counts_.size() < kCandidates)
+      counts_.emplace(k, 1);
+  }
+  // Chooses the values (most frequent first, ties by their bits: the same on any machine).
+  void choose() {
+    std::vector<std::pair<std::uint64_t, std::uint64_t>> c(counts_.begin(), counts_.end());
+    std::sort(c.begin(), c.end(), [](const auto& a, const auto& b) {
+      return a.second != b.second ? a.second > b.second : a.first < b.first;
+    });
+    for (const auto& [k, n] : c) {
+      if (n < 2 || values_.size() == kLiteral) break;
+      values_.push_back(k);
+    }
+    slots_.fill(-1);
+    for (std::size_t i = 0; i < values_.size(); ++i) {
+      std::size_t s = slot(values_[i]);
+      while (slots_[s] >= 0) s = (s + 1) % slots_.size();
+      slots_[s] = static_cast<std::int16_t>(i);
+    }
+  }
+  const std::vector<std::uint64_t>& values() const { return values_; }
+  int code(std::uint64_t k) const {
+    for (std::size_t s = slot(k);; s = (s + 1) % slots_.size()) {
+      if (slots_[s] < 0) return kLiteral;
+      if (values_[slots_[s]] == k) return slots_[s];
+    }
+  }
+  static std::uint64_t bits(double v) {
+    std::uint64_t k;
+    std::memcpy(&k, &v, sizeof k);
+    return k;
+  }
+
+ private:
+  static constexpr std::size_t kCandidates = 1 << 16;
+  std::size_t slot(std::uint64_t k) const { return (k * 0x9E3779B97F4A7C15ULL) >> 54; }
+  std::unordered_map<std::uint64_t, std::uint64_t> counts_;
+  std::vector<std::uint64_t> values_;
+  std::array<std::int16_t, 1024> slots_{};
+};
+
+// The part "bond codes": the bonds of every rank's block in ID order (the same bytes on any
+// number of ranks), compact (io/checkpoint.hpp gives the layout).
+std::string encodeBonds(const std::vector<BondBlock>& blocks, int nA) {
+  struct Next {
+    std::uint64_t id;
+    std::size_t block;
+    bool operator>(const Next& o) const { return id > o.id; }
+  };
+  // The particles of all blocks merged in ID order: (block, particle, its first bond).
+  struct At {
+    std::size_t block, k, bond;
+  };
+  std::vector<At> order;
+  std::vector<std::size_t> pos(blocks.size(), 0), bond(blocks.size(), 0);
+  std::priority_queue<Next, std::vector<Next>, std::greater<>> heads;
+  std::size_t m = 0;
+  for (std::size_t r = 0; r < blocks.size(); ++r) {
+    if (blocks[r].n) heads.push({blocks[r].id[0], r});
+    m += blocks[r].m;
+  }
+  while (!heads.empty()) {
+    const std::size_t r = heads.top().block;
+    heads.pop();
+    const std::size_t k = pos[r]++;
+    order.push_back({r, k, bond[r]});
+    bond[r] += blocks[r].count[k];
+    if (pos[r] < blocks[r].n) heads.push({blocks[r].id[pos[r]], r});
+  }
+  // Every 7th bond's values choose the dictionaries.
+  std::vector<Dictionary> dict(nA);
+  std::size_t seen = 0;
+  for (const At& a : order) {
+    const BondBlock& b = blocks[a.block];
+    for (std::size_t j = 0; j < b.count[a.k]; ++j, ++seen)
+      if (seen % 7 == 0)
+        for (int c = 0; c < nA; ++c) dict[c].count(b.attr[(a.bond + j) * nA + c]);
+  }
+  std::string out, codes;
+  put(out, static_cast<std::uint32_t>(nA));
+  for (auto& d : dict) {
+    d.choose();
+    out += static_cast<char>(d.values().size());
+    for (std::uint64_t v : d.values()) put(out, v);
+  }
+  put(out, static_cast<std::uint64_t>(order.size()));
+  put(out, static_cast<std::uint64_t>(m));
+  out.reserve(out.size() + 2 * m);
+  codes.reserve(m * nA);
+  std::uint64_t previous = 0;
+  for (const At& a : order) {
+    const BondBlock& b = blocks[a.block];
+    const std::uint64_t owner = b.id[a.k], n = b.count[a.k];
+    putVarint(out, owner - previous);
+    putVarint(out, n);
+    previous = owner;
+    std::uint64_t last = owner;
+    for (std::size_t j = a.bond; j < a.bond + n; ++j) {
+      const auto d = static_cast<std::int64_t>(b.partner[j] - last);
+      if (d >= (std::int64_t{1} << 61) || d <= -(std::int64_t{1} << 61))
+        throw Error("checkpoint: the IDs of particles " + std::to_string(owner) + " and " +
+                    std::to_string(b.partner[j]) + " are too far apart to be written");
+      const auto zigzag = static_cast<std::uint64_t>((d << 1) ^ (d >> 63));
+      putVarint(out, zigzag << 1 | (b.dead[j] != 0));
+      last = b.partner[j];
+      for (int c = 0; c < nA; ++c) {
+        const std::uint64_t v = Dictionary::bits(b.attr[j * nA + c]);
+        const int code = dict[c].code(v);
+        codes += static_cast<char>(code);
+        if (code == kLiteral) put(codes, v);
+      }
+    }
+  }
+  return out + codes;
+}
+
+// Every rank's bonds, encoded on rank 0 (empty elsewhere, and when there are none).
+std::string gatherBonds(OutputContext& out) {
+  const int nA = out.ctx.bonds.nAttr();
+  std::vector<char> local = localBondBlock(out.ctx.particles, out.ctx.bonds);
+  std::vector<std::size_t> starts{0, local.size()};
+  // One rank's block is read where it is.
+  const std::vector<char> all =
+      out.comm.size() > 1 ? out.comm.gather(local, starts) : std::move(local);
+  if (!out.comm.root()) return {};
+  std::vector<BondBlock> blocks;
+  std::size_t m = 0;
+  for (std::size_t r = 0; r + 1 < starts.size(); ++r) {
+    blocks.push_back(blockView(all.data() + starts[r], nA));
+    m += blocks.back().m;
+  }
+  return m ? encodeBonds(blocks, nA) : std::string{};
+}
+
+// The part "bond codes" back as rows (owner, partner, dead, attributes), for parseRestart.
+std::vector<double> decodeBonds(std::string_view part, int& nA, const std::string& path) {
+  auto damaged = [&](const std::string& what) {
+    return InputError(path, 0, "damaged: its bond codes " + what);
+  };
+  std::size_t at = 0;
+  auto need = [&](std::size_t n) {
+    if (n > part.size() - at) throw damaged("end early");
+  };
+  auto fixed = [&](auto v) {
+    need(sizeof v);
+    std::memcpy(&v, part.data() + at, sizeof v);
+    at += sizeof v;
+    return v;
+  };
+  auto varint = [&] {
+    std::uint64_t v = 0;
+    for (int shift = 0;; shift += 7) {
+      need(1);
+      const auto byte = static_cast<unsigned char>(part[at++]);
+      if (shift == 63 && byte > 1) throw damaged("hold a number of more than 64 bits");
+      v |= std::uint64_t{byte & 0x7FU} << shift;
+      if (!(byte & 0x80)) return v;
+    }
+  };
+  const auto columns = fixed(std::uint32_t{});
+  if (columns > 64) throw damaged("say each bond has " + std::to_string(columns) + " attributes");
+  nA = static_cast<int>(columns);
+  std::vector<std::vector<double>> dict(nA);
+  for (auto& d : dict) {
+    const auto size = static_cast<unsigned char>(fixed(char{}));
+    for (unsigned k = 0; k < size; ++k) d.push_back(fixed(double{}));
+  }
+  const auto particles = fixed(std::uint64_t{}), bonds = fixed(std::uint64_t{});
+  // Each particle and each bond takes a byte at least: a bound before allocating.
+  if (particles > part.size() - at || bonds > (part.size() - at) / (1 + nA))
+    throw damaged("end early");
+  const std::size_t width = 3 + nA;
+  std::vector<double> rows(bonds * width);
+  std::size_t row = 0;
+  std::uint64_t owner = 0;
+  for (std::uint64_t k = 0; k < particles; ++k) {
+    owner += varint();
+    const std::uint64_t n = varint();
+    if (n > bonds - row) throw damaged("hold more bonds than they say");
+    std::uint64_t partner = owner;
+    for (std::uint64_t j = 0; j < n; ++j, ++row) {
+      const std::uint64_t code = varint();
+      const std::uint64_t zigzag = code >> 1;
+      partner += (zigzag >> 1) ^ (~(zigzag & 1) + 1);
+      double* r = &rows[row * width];
+      r[0] = static_cast<double>(static_cast<Gid>(owner));
+      r[1] = static_cast<double>(static_cast<Gid>(partner));
+      r[2] = static_cast<double>(code & 1);
+    }
+  }
+  if (row != bonds) throw damaged("hold fewer bonds than they say");
+  for (std::size_t r = 0; r < bonds; ++r)
+    for (int c = 0; c < nA; ++c) {
+      const auto code = static_cast<unsigned char>(fixed(char{}));
+      if (code == kLiteral)
+        rows[r * width + 3 + c] = fixed(double{});
+      else if (code < dict[c].size())
+        rows[r * width + 3 + c] = dict[c][code];
+      else
+        throw damaged("name value " + std::to_string(code) + " of a dictionary of " +
+                      std::to_string(dict[c].size()));
+    }
+  if (at != part.size())
+    throw damaged("are followed by " + std::to_string(part.size() - at) + " bytes");
+  return rows;
+}
+
 // A checkpoint read back: its header and the texts of its parts.
 struct Contents {
   long step = -1;
   double time = 0, dt = 0, setupDt = 0;
   std::uint64_t hash = 0;
   RestartTexts texts;
+  int bondAttrs = -1;  // the attributes per bond its bond codes hold
 };
 
 // Reads `bytes` from `at`, or says the file is cut short.
@@ -114,7 +405,9 @@ Contents readCheckpoint(const std::string& path) {
                              " bytes, not a whole number of numbers");
       auto& rows = c.texts.bondRows.emplace(text.size() / sizeof(double));
       std::memcpy(rows.data(), text.data(), text.size());
-    } else if (name == "particles")
+    } else if (name == "bond codes")
+      c.texts.bondRows = decodeBonds(text, c.bondAttrs, path);
+    else if (name == "particles")
       c.texts.particles = std::move(text);
     else
       throw InputError(path, 0, "damaged: a part named '" + name + "'");
@@ -204,7 +497,8 @@ void CheckpointOutput::begin(OutputContext& out, bool resumed) {
   last_ = seconds();
   if (!out.comm.root()) return;
   removeStepFiles(out.outDir, "checkpoint.", ".ckpt", resumed ? out.step : -1);
-  // The restart files too: a signal writes them where the scenario asks for none.
+  // The restart files too: an earlier run in the folder may have written some where this one writes
+  // none.
   removeRestartFiles(out.outDir, resumed ? out.step : -1);
 }
 
@@ -212,10 +506,10 @@ void CheckpointOutput::write(OutputContext& out) {
   if (out.step == lastWritten_) return;
   lastWritten_ = out.step;
   last_ = seconds();
-  const RestartTexts t = restartTexts(out, true);
+  const RestartTexts t = restartTexts(out, false);
+  const std::string bonds = gatherBonds(out);
   if (!out.comm.root()) return;
-  // Written part by part as the CRC-32 runs over them, so that the bonds (most of the
-  // bytes) are neither formatted as text nor copied into one buffer first.
+  // Written part by part as the CRC-32 runs over them: no copy of the whole file.
   AtomicFile f(checkpointPath(out.outDir, out.step));
   std::uint32_t crc = 0;
   auto emit = [&](std::string_view b) {
@@ -236,13 +530,11 @@ void CheckpointOutput::write(OutputContext& out) {
   put(head, out.ctx.dt());
   put(head, out.setupDt);
   put(head, hash_);
-  put(head, static_cast<std::uint32_t>(2 + (t.fixed ? 1 : 0) + (t.bondRows ? 1 : 0)));
+  put(head, static_cast<std::uint32_t>(2 + (t.fixed ? 1 : 0) + (bonds.empty() ? 0 : 1)));
   emit(head);
   emitPart("state", *t.state);
   if (t.fixed) emitPart("fixed", *t.fixed);
-  if (t.bondRows)
-    emitPart("bond rows", std::string_view(reinterpret_cast<const char*>(t.bondRows->data()),
-                                           t.bondRows->size() * sizeof(double)));
+  if (!bonds.empty()) emitPart("bond codes", bonds);
   emitPart("particles", t.particles);
   f.stream().write(reinterpret_cast<const char*>(&crc), sizeof crc);
   f.commit(true);
@@ -273,6 +565,13 @@ Resumed resumeFromCheckpoint(const std::string& dir, std::uint64_t scenarioHash,
         throw InputError(path, 0, "damaged: it holds step " + std::to_string(c.step));
     } catch (const InputError& e) {
       skip(e);
+      continue;
+    }
+    if (c.bondAttrs >= 0 && c.bondAttrs != pb.model->schema().nBond()) {
+      skip(InputError(path, 0,
+                      "its bonds have " + std::to_string(c.bondAttrs) +
+                          " attributes, the model's " +
+                          std::to_string(pb.model->schema().nBond())));
       continue;
     }
     if (c.hash != scenarioHash && !force)

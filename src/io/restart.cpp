@@ -63,14 +63,14 @@ RestartNames restartNames(const std::string& dir, long step) {
           bondRestartPath(dir, step)};
 }
 
-RestartTexts restartTexts(OutputContext& out, bool bondRows) {
+RestartTexts restartTexts(OutputContext& out, bool bonds) {
   const Particles& P = out.ctx.particles;
   const Bonds& B = out.ctx.bonds;
   const Schema& s = P.schema();
   const int nA = s.nAlter(), nB = B.nAttr(), nF = s.nFixed();
   const bool withFixed = fixedChange(out);
   std::vector<double> rows, brows, frows;
-  brows.reserve(B.count() * (3 + nB));
+  if (bonds) brows.reserve(B.count() * (3 + nB));
   // In ID order (each particle's bonds are in partner order), so that the rows are merged
   // rather than sorted on rank 0.
   std::vector<std::size_t> order(P.owned());
@@ -84,7 +84,7 @@ RestartTexts restartTexts(OutputContext& out, bool bondRows) {
       frows.push_back(static_cast<double>(P.gid(i)));
       frows.insert(frows.end(), P.fixed(i), P.fixed(i) + nF);
     }
-    for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+    for (std::size_t b = B.begin(i); bonds && b < B.end(i); ++b) {
       brows.push_back(static_cast<double>(P.gid(i)));
       brows.push_back(static_cast<double>(B.partnerGid(b)));
       brows.push_back(B.alive(b) ? 0 : 1);
@@ -93,8 +93,8 @@ RestartTexts restartTexts(OutputContext& out, bool bondRows) {
   }
   const auto all = gatherSortedRows(out.comm, rows, 1 + nA);
   const long nBondsTotal = out.comm.sum(static_cast<long>(B.count()));
-  auto allBonds =
-      nBondsTotal ? gatherSortedRows(out.comm, brows, 3 + nB, 2) : std::vector<double>{};
+  const auto allBonds =
+      nBondsTotal && bonds ? gatherSortedRows(out.comm, brows, 3 + nB, 2) : std::vector<double>{};
   const auto allFixed =
       withFixed ? gatherSortedRows(out.comm, frows, 1 + nF) : std::vector<double>{};
   RestartTexts t;
@@ -122,9 +122,7 @@ RestartTexts restartTexts(OutputContext& out, bool bondRows) {
     for (const auto& n : s.fixed) header += " " + n;
     t.fixed = rowsText(header + "\n", allFixed, 1 + nF);
   }
-  if (nBondsTotal && bondRows) {
-    t.bondRows = std::move(allBonds);
-  } else if (nBondsTotal) {
+  if (nBondsTotal && bonds) {
     std::string& f = t.bonds.emplace();
     f = "# pdq bonds: step " + std::to_string(out.step) + "\n# columns: id partner dead";
     for (const auto& n : s.bond) f += " " + n;

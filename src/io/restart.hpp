@@ -28,8 +28,9 @@ std::string stateRestartPath(const std::string& dir, long step);
 // writes as files and a checkpoint (io/checkpoint.hpp) holds in one file. Parts not written
 // at that step (fixed attributes of a non-periodic problem, bonds of a model without) are
 // empty. The bonds, by far the largest part, may instead be held as their rows of numbers
-// (owner ID, partner ID, dead flag, bond attributes; sorted by owner and partner), which a
-// checkpoint stores in binary: formatting them as text costs far more than writing them.
+// (owner ID, partner ID, dead flag, bond attributes; sorted by owner and partner): what a
+// checkpoint's binary bonds are read into (formatting them as text costs far more than
+// writing them).
 struct RestartTexts {
   long step = -1;
   std::optional<std::string> state, fixed, bonds;
@@ -37,9 +38,9 @@ struct RestartTexts {
   std::string particles;
 };
 
-// The state at out.step, on rank 0 (nothing elsewhere); collective. `bondRows`: the bonds
-// as rows (RestartTexts::bondRows) rather than text.
-RestartTexts restartTexts(OutputContext& out, bool bondRows = false);
+// The state at out.step, on rank 0 (nothing elsewhere); collective. Without `bonds` the
+// bonds are left out (a checkpoint gathers them in its own form); the state still counts them.
+RestartTexts restartTexts(OutputContext& out, bool bonds = true);
 
 // What each part is called in messages: its file (RestartOutput's names in a folder).
 struct RestartNames {

@@ -242,19 +242,42 @@ TEST(Checkpoint, DamagedOnesAreSkippedWithAWarningNamingThem) {
   std::string flipped = good100;
   flipped[flipped.size() / 2] ^= 0x10;
   Parsed noBonds = parse(good100);
-  ASSERT_EQ(noBonds.parts.size(), 3u);  // state, bond rows, particles
-  ASSERT_EQ(noBonds.parts[1].first, "bond rows");
-  Parsed oddBonds = noBonds, oneSided = noBonds;
+  ASSERT_EQ(noBonds.parts.size(), 3u);  // state, bond codes, particles
+  ASSERT_EQ(noBonds.parts[1].first, "bond codes");
+  Parsed cutBonds = noBonds, oneSided = noBonds;
   noBonds.parts.erase(noBonds.parts.begin() + 1);
-  // The binary bond rows are checked as strictly as a bonds file: the first row's partner
-  // made an ID no particle has, or the part cut mid-number.
-  std::string& rows = oneSided.parts[1].second;
-  ASSERT_GE(rows.size(), 2 * sizeof(double));
-  double partner;
-  std::memcpy(&partner, rows.data() + sizeof(double), sizeof partner);
-  partner += 1000;
-  std::memcpy(rows.data() + sizeof(double), &partner, sizeof partner);
-  oddBonds.parts[1].second.pop_back();
+  // The bond codes are checked as strictly as a bonds file: the first bond's partner made
+  // an ID no particle has (its code rewritten, by the layout in io/checkpoint.hpp), or the
+  // part cut short.
+  std::string& codes = oneSided.parts[1].second;
+  std::size_t at = 0;
+  std::uint32_t attributes;
+  std::memcpy(&attributes, codes.data(), sizeof attributes);
+  at += sizeof attributes;
+  for (std::uint32_t c = 0; c < attributes; ++c)
+    at += 1 + 8 * static_cast<unsigned char>(codes[at]);
+  at += 2 * sizeof(std::uint64_t);  // the counts of particles and bonds
+  auto varint = [&] {
+    std::uint64_t v = 0;
+    for (int shift = 0;; shift += 7) {
+      const auto byte = static_cast<unsigned char>(codes[at++]);
+      v |= std::uint64_t{byte & 0x7FU} << shift;
+      if (!(byte & 0x80)) return v;
+    }
+  };
+  varint();  // the first particle's ID
+  varint();  // its bond count
+  const std::size_t first = at;
+  const std::uint64_t code = varint();
+  ASSERT_EQ(code >> 1 & 1, 0u);                 // the partner's ID above the particle's
+  const std::uint64_t moved = code + 4 * 1000;  // the partner's ID 1000 higher, the flag kept
+  std::string bytes;
+  for (std::uint64_t v = moved;; v >>= 7) {
+    bytes += static_cast<char>((v & 0x7F) | (v >= 0x80 ? 0x80 : 0));
+    if (v < 0x80) break;
+  }
+  codes.replace(first, at - first, bytes);
+  cutBonds.parts[1].second.pop_back();
   struct Spoilt {
     const char* name;
     std::string newest;  // checkpoint 100 as spoilt
@@ -267,7 +290,7 @@ TEST(Checkpoint, DamagedOnesAreSkippedWithAWarningNamingThem) {
       {"a flipped bit", flipped, "damaged: its CRC-32 is"},
       {"no bonds", build(noBonds), "[Bonds.100.rst]: missing: "},
       {"a bond to no particle", build(oneSided), "[Bonds.100.rst]:1: partner "},
-      {"bond rows cut mid-number", build(oddBonds), "damaged: its bond rows are "},
+      {"bond codes cut short", build(cutBonds), "damaged: its bond codes "},
   };
   for (const Spoilt& c : cases) {
     SCOPED_TRACE(c.name);

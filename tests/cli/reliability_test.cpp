@@ -182,6 +182,58 @@ TEST(Reliability, Sigusr1ToMpirunIsForwardedAndStopsTheJob) {
   stopBySignal(2, SIGUSR1, false, false);
 }
 
+// A realistically large run: a PMB block of 21,952 particles and 2.4 million bonds (some
+// 100 MB as the rows of a bonds file). SIGTERM once it is
+// stepping: it stops within 5 s with a checkpoint a resumed run reads without a warning.
+TEST(Reliability, SigtermToALargeRunWritesItsCheckpointWithin5s) {
+  const std::string dir = freshDir("signal_large");
+  writeFile(dir + "/block.toml", R"(steps = 100000000
+[model]
+name = "pmb"
+E = 1.0
+density = 1.0
+horizon = 3.0
+dt = 0.2
+critical_stretch = 0.005
+lattice_spacing = 1.0
+surface_correction = true
+
+[particles]
+generator = "cubic"
+nx = 28
+ny = 28
+nz = 28
+
+[[particles.set]]
+attribute = "vx"
+value = 0
+gradient = [1e-4, 0, 0]
+
+[output]
+dir = "out"
+globals_every = 5
+final_restart = false
+)");
+  const std::string out = dir + "/out";
+  const Started run = startPdq({"run", "block.toml", "-q"}, dir);
+  ASSERT_TRUE(waitFor([&] { return lastRowStep(out + "/history.csv") >= 5; }, 300))
+      << "not stepping";
+  const auto sent = std::chrono::steady_clock::now();
+  ASSERT_EQ(kill(run.pid, SIGTERM), 0);
+  const auto r = waitPdq(run);
+  EXPECT_LT(secondsSince(sent), 5.0);
+  EXPECT_EQ(r.code, 4) << r.all();
+  const long at = stoppedAt(r.err);
+  ASSERT_GT(at, 0) << r.all();
+  char name[40];
+  std::snprintf(name, sizeof name, "/checkpoint.%012ld.ckpt", at);
+  ASSERT_TRUE(fs::exists(out + name)) << name;
+  const auto resumed = runPdq(
+      {"run", "block.toml", "-q", "--resume", "out", "--steps", std::to_string(at + 1)}, dir);
+  EXPECT_EQ(resumed.code, 0) << resumed.all();
+  EXPECT_THAT(resumed.err, Not(HasSubstr("warning"))) << resumed.all();
+}
+
 TEST(Reliability, MaxWallTimeStopsBeforeTheLimitWithACheckpoint) {
   const std::string dir = freshDir("wall_time");
   const std::string sc = longCase(dir, 100000000);
