@@ -26,8 +26,10 @@ run: build
 
 # The suite includes a short fuzz run (tests/fuzz/), which needs clang (deps-test has it).
 test: CMAKE_FLAGS += -DPDQ_FUZZ_TARGETS=ON
+# One test more than cores: many tests spend much of their time waiting on the processes
+# they start (signals, watchdogs, mpirun start-up).
 test: deps-test build
-	cd $(BUILD) && ctest --output-on-failure -j$(JOBS) --timeout 900
+	cd $(BUILD) && ctest --output-on-failure -j$$(( $(JOBS) + 1 )) --timeout 900
 
 # The fuzz targets as the suite builds them (tests/fuzz/), each run FUZZ_SECONDS.
 fuzz:
