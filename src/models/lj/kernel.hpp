@@ -1,15 +1,28 @@
 #pragma once
-// The force kernel of one particle: the sum of its Lennard-Jones pair forces (and pair
-// energies and virials) over its Verlet list.
+// The force kernel: Lennard-Jones pair forces (and pair energies and virials) over half
+// Verlet lists, each pair computed once, summed EXACTLY so that the order of the pairs —
+// which depends on the memory layout, the processor grid and the thread count — does not
+// change a bit of the result.
 //
-// Two passes. The first walks the list (sorted by global ID) and keeps the pairs closer
-// than rc, in list order, without branches. The second evaluates the pair law on the kept
-// pairs four at a time: kept pair q adds into accumulator lane q % 4, and the lanes are
-// combined as (l0 + l1) + (l2 + l3). The kept pairs and their order depend only on the
-// positions, never on the list's extra entries beyond rc, the memory layout or the time
-// of the last rebuild, so the sums are the same bits on any processor grid and thread
-// count. Lane-wise operations are plain IEEE additions, multiplications, divisions and
-// square roots (no FMA contraction), so vector and scalar code agree bit for bit.
+// Exact sums. Every pair term t is split into t = h + l + e with h on a grid of step Q1
+// and l on a grid of step Q2 = Q1 / 2^40, each by rounding to the nearest grid point
+// ((t + M) - M with M = 1.5 * 2^52 * Q, exact for |t| < 2^51 Q); the remainder e is below
+// Q2 / 2 and dropped. Sums of grid values stay on the grid and, while they are below
+// 2^53 grid steps, are exact: the same bits in any order. A particle's value is then
+// (sum of h) + (sum of l), rounded once. Q1 = 2^-20 and Q2 = 2^-60 of the term's scale
+// (24 epsilon / sigma for forces, epsilon for energies and virials): the terms keep about
+// 60 bits below their scale, finer than a double sum of them would; the model refuses
+// pairs so close that a term could leave the grid's exact range (`closest`).
+//
+// The split is odd in t (rounding to nearest, ties to even, is symmetric), so the term
+// the owned partner j receives, -h and -l, is exactly what j's own evaluation of the pair
+// (separation x_j - x_i, the same distance) would give: a pair split across ranks (each
+// rank computing its own side against a ghost) adds the same bits as the pair within one
+// rank.
+//
+// Three passes per particle: the list's pairs closer than rc are kept without branches
+// (structure of arrays); the pair law is evaluated on them four at a time, vectorised;
+// the owned partners receive their terms (scalar scatter).
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -19,82 +32,52 @@
 
 namespace pdq::lj {
 
+// The two grids of one kind of term.
+struct Grid {
+  Grid() = default;
+  explicit Grid(double scale) {
+    const int e = std::ilogb(scale);
+    m1 = std::ldexp(1.5, 52 + e - 20);
+    m2 = std::ldexp(1.5, 52 + e - 60);
+    limit = std::ldexp(1.0, e + 20);
+  }
+  // limit: the largest term allowed, 2^40 steps of Q1, so that 2^13 terms still sum
+  // exactly (below 2^53 steps), and a term's remainder is at most 2^39 steps of Q2.
+  double m1 = 0, m2 = 0, limit = 0;
+};
+
+[[gnu::always_inline]] inline void split(double t, const Grid& g, double& h, double& l) {
+  h = (t + g.m1) - g.m1;
+  l = ((t - h) + g.m2) - g.m2;
+}
+
 // Per-thread buffers of the kept pairs (structure of arrays).
 struct KernelScratch {
   std::vector<double> dx, dy, dz, r2;
+  std::vector<double> t[10];  // split terms of the kept pairs: f (h, l) x 3, u (h, l), w (h, l)
+  std::vector<std::uint32_t> j;
   void reserve(std::size_t n) {
     const std::size_t m = n + 4;  // room for the padding of the last group of four
-    if (dx.size() < m) dx.resize(m), dy.resize(m), dz.resize(m), r2.resize(m);
+    if (dx.size() >= m) return;
+    dx.resize(m), dy.resize(m), dz.resize(m), r2.resize(m), j.resize(m);
+    for (auto& v : t) v.resize(m);
   }
 };
 
-struct PairSums {
-  double f[3];  // force on the particle
-  double u;     // sum of its pair energies (Energy only)
-  double w;     // sum of its pair virials r·F(r) = r² F(r)/r (Energy only)
+// Accumulator rows per owned particle: force (hx, hy, hz, lx, ly, lz), and energy and
+// virial (hu, lu, hw, lw).
+constexpr int kForceRow = 6, kEnergyRow = 4;
+
+struct KernelOut {
+  double* force = nullptr;   // kForceRow per owned particle, added to
+  double* energy = nullptr;  // kEnergyRow per owned particle, added to (null: forces only)
+  double closest2 = 0;       // smallest r^2 of a kept pair, lowered
 };
 
-// xi: the particle's position; pos/stride: rows of positions (x, y, z first);
-// [first, last): its Verlet list. `scratch` must hold last - first entries.
-template <bool ForceShift, bool Energy>
-[[gnu::always_inline]] inline PairSums pairSums(const PairLJ& pair, const double* xi,
-                                                const double* pos, std::size_t stride,
-                                                const std::uint32_t* first,
-                                                const std::uint32_t* last, KernelScratch& scratch) {
-  double* dx = scratch.dx.data();
-  double* dy = scratch.dy.data();
-  double* dz = scratch.dz.data();
-  double* r2 = scratch.r2.data();
-  const double x = xi[0], y = xi[1], z = xi[2], rc2 = pair.rc2;
-  std::size_t m = 0;
-  for (const std::uint32_t* k = first; k != last; ++k) {
-    const double* xj = pos + std::size_t(*k) * stride;
-    const double ex = x - xj[0], ey = y - xj[1], ez = z - xj[2];
-    const double d2 = ex * ex + ey * ey + ez * ez;
-    dx[m] = ex;
-    dy[m] = ey;
-    dz[m] = ez;
-    r2[m] = d2;
-    m += d2 < rc2;
-  }
-  // Pad the last group with harmless pairs: zero separation vector (so zero force) at
-  // distance rc (finite terms); their energies are masked below.
-  const std::size_t kept = m;
-  for (; m % 4; ++m) dx[m] = dy[m] = dz[m] = 0, r2[m] = rc2;
-
-  const double f12 = pair.f12, f6 = pair.f6, fc = pair.fc;
-  double ax[4] = {0, 0, 0, 0}, ay[4] = {0, 0, 0, 0}, az[4] = {0, 0, 0, 0}, au[4] = {0, 0, 0, 0};
-  double aw[4] = {0, 0, 0, 0};
-  for (std::size_t q = 0; q < m; q += 4) {
-    for (int l = 0; l < 4; ++l) {
-      const double ir2 = 1 / r2[q + l];
-      const double ir6 = ir2 * ir2 * ir2;
-      double fr = (f12 * ir6 - f6) * ir6 * ir2;
-      if constexpr (ForceShift) fr -= fc / std::sqrt(r2[q + l]);
-      ax[l] += fr * dx[q + l];
-      ay[l] += fr * dy[q + l];
-      az[l] += fr * dz[q + l];
-      if constexpr (Energy) {
-        const double w = q + l < kept ? 1.0 : 0.0;
-        au[l] += w * pair.energy(r2[q + l]);
-        aw[l] += w * (fr * r2[q + l]);
-      }
-    }
-  }
-  PairSums s;
-  s.f[0] = (ax[0] + ax[1]) + (ax[2] + ax[3]);
-  s.f[1] = (ay[0] + ay[1]) + (ay[2] + ay[3]);
-  s.f[2] = (az[0] + az[1]) + (az[2] + az[3]);
-  s.u = (au[0] + au[1]) + (au[2] + au[3]);
-  s.w = (aw[0] + aw[1]) + (aw[2] + aw[3]);
-  return s;
-}
-
-// Forces (rows of three, unless `force` is null) and, if `energy` is not null, half the
-// pair energy sums and half the pair virial sums (into `virial`) of particles
-// [first, last), each along its list.
-void pairSumsRange(const PairLJ& pair, const double* pos, std::size_t stride,
-                   const VerletList& lists, long first, long last, double* force, double* energy,
-                   double* virial, KernelScratch& scratch);
+// Adds the terms of the pairs of owned particles [first, last) to `out`. pos/stride: rows
+// of positions (x, y, z first) of the local particles.
+void pairSumsRange(const PairLJ& pair, const Grid& forceGrid, const Grid& energyGrid,
+                   const double* pos, std::size_t stride, const VerletList& lists, long first,
+                   long last, KernelOut& out, KernelScratch& scratch);
 
 }  // namespace pdq::lj

@@ -1,14 +1,14 @@
 // Lennard-Jones molecular dynamics in reduced units (epsilon, sigma, mass), the engine's
 // first shuffling model: particles wander between cells and ranks.
 //
-//   neighbours   a Verlet list per owned particle, rebuilt after every engine shuffle.
-//                The model's horizon is rc and it asks for cells of at least rc + skin;
-//                the engine shuffles once some particle moved more than (cell - rc) / 2
-//                since the last rebuild, so a list of every particle within one cell
-//                edge (ctx.cellSize()) at the rebuild holds every pair closer than rc
-//                until the next one. Lists are sorted by global ID (see verlet_list.hpp).
-//   force        full lists: each owned particle sums its own force, so threads need no
-//                atomics and the ghosts need no forces sent back.
+//   neighbours   half Verlet lists (verlet_list.hpp) of radius one cell edge, rebuilt after
+//                every engine shuffle. The model's horizon is rc and it asks for cells of
+//                at least rc + skin; the engine shuffles once some particle moved more
+//                than (cell - rc) / 2 since the last rebuild.
+//   force        each pair once (Newton's third law between owned particles; a pair with
+//                a ghost is computed by each side's rank), summed exactly (kernel.hpp), so
+//                the bits do not depend on the order of the pairs, hence on neither the
+//                processor grid nor the threads. No forces travel back to other ranks.
 //   integration  the engine's velocity Verlet (leapfrog form, engine/integrator.hpp): the
 //                stored velocity is v(0) at step 0 and the half-step v(n-1/2) after.
 //   globals      potential, kinetic and total energy, temperature and pressure at the current
@@ -19,8 +19,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <vector>
 
+#include "engine/error.hpp"
 #include "engine/model.hpp"
 #include "models/lj/kernel.hpp"
 #include "models/lj/pair_lj.hpp"
@@ -44,6 +46,13 @@ class LennardJones final : public Model {
     const std::string s = p.choice("shift", "energy", {"none", "energy", "force"});
     const Shift shift = s == "none" ? Shift::None : s == "energy" ? Shift::Energy : Shift::Force;
     pair_ = PairLJ(epsilon, sigma, rc, shift);
+    forceGrid_ = Grid(24 * epsilon / sigma);
+    energyGrid_ = Grid(epsilon);
+    // The closest pair whose terms stay within the grids' limits: below it the repulsive
+    // r^-12 terms dominate and bound the force, energy and virial terms (with room).
+    closest_ = 1.05 * std::max({std::pow(pair_.f12 / forceGrid_.limit, 1.0 / 13),
+                                std::pow(pair_.u12 / energyGrid_.limit, 1.0 / 12),
+                                std::pow(pair_.f12 / energyGrid_.limit, 1.0 / 12)});
   }
 
   Schema schema() const override {
@@ -58,7 +67,7 @@ class LennardJones final : public Model {
   void prepare(Context& ctx) override { buildLists(ctx); }
   void neighboursChanged(Context& ctx) override { buildLists(ctx); }
 
-  void force(Context& ctx) override { evaluate(ctx.particles, forces(ctx.particles), nullptr); }
+  void force(Context& ctx) override { evaluate(ctx, forces(ctx.particles), nullptr); }
 
   void bodies(const Context&, std::span<Body> owned) const override {
     for (Body& b : owned) b.mass = mass_;
@@ -66,7 +75,7 @@ class LennardJones final : public Model {
 
   std::vector<std::string> fields() const override { return {"potential_energy"}; }
   void field(const Context& ctx, int, std::span<double> out) const override {
-    evaluate(ctx.particles, nullptr, out.data());
+    evaluate(ctx, nullptr, out.data());
   }
 
   std::vector<std::string> globals() const override {
@@ -75,7 +84,7 @@ class LennardJones final : public Model {
   std::vector<double> globalValues(Context& ctx) override {
     Particles& P = ctx.particles;
     energy_.resize(P.owned());
-    evaluate(P, forces(P), energy_.data());
+    evaluate(ctx, forces(P), energy_.data());
     const double half = ctx.step() == 0 ? 0.0 : 0.5 * ctx.dt() / mass_;
     const double pe = ctx.sumOwned([&](std::size_t i) { return energy_[i]; });
     const double ke = ctx.sumOwned([&](std::size_t i) {
@@ -103,37 +112,89 @@ class LennardJones final : public Model {
   // (rows of three: the integ table) unless null, and, unless `energy` is null, each
   // particle's potential energy and virial (half of its pair energies and of its pair
   // virials r·F(r), the latter into virial_).
-  void evaluate(const Particles& P, double* force, double* energy) const {
+  void evaluate(const Context& ctx, double* force, double* energy) const {
+    const Particles& P = ctx.particles;
     const long n = static_cast<long>(P.owned());
     if (n == 0) return;
-    // Positions packed four to a row (32 bytes, one cache line each), a denser copy of
-    // the alterable table for the kernel's scattered reads.
-    const long nLocal = static_cast<long>(P.local());
+    packPositions(P);
     if (energy) virial_.resize(n);
-    pos_.resize(4 * nLocal);
-    scratch_.resize(std::max<std::size_t>(scratch_.size(), omp_get_max_threads()));
-#pragma omp parallel
+    const int threads = omp_get_max_threads();
+    scratch_.resize(std::max<std::size_t>(scratch_.size(), threads));
+    // One accumulator per thread (Newton's third law writes to other particles' rows);
+    // their exact sums add up in any order.
+    acc_.resize(threads);
+    double closest2 = pair_.rc2;
+#pragma omp parallel reduction(min : closest2)
     {
-#pragma omp for schedule(static)
-      for (long j = 0; j < nLocal; ++j) std::copy_n(P.alter(j), 3, &pos_[4 * j]);
       const int nt = omp_get_num_threads(), t = omp_get_thread_num();
+      Accumulator& a = acc_[t];
+      a.force.assign(kForceRow * n, 0.0);
+      if (energy) a.energy.assign(kEnergyRow * n, 0.0);
       KernelScratch& scratch = scratch_[t];
       scratch.reserve(lists_.longest());
-      pairSumsRange(pair_, pos_.data(), 4, lists_, n * t / nt, n * (t + 1) / nt, force, energy,
-                    energy ? virial_.data() : nullptr, scratch);
+      KernelOut out;
+      out.force = a.force.data();
+      out.energy = energy ? a.energy.data() : nullptr;
+      out.closest2 = pair_.rc2;
+      pairSumsRange(pair_, forceGrid_, energyGrid_, pos_.data(), 4, lists_, n * t / nt,
+                    n * (t + 1) / nt, out, scratch);
+      closest2 = out.closest2;
+#pragma omp barrier
+#pragma omp for schedule(static)
+      for (long i = 0; i < n; ++i) {
+        for (int c = 0; c < 3; ++c) {
+          double h = 0, l = 0;
+          for (int u = 0; u < nt; ++u)
+            h += acc_[u].force[kForceRow * i + c], l += acc_[u].force[kForceRow * i + 3 + c];
+          if (force) force[3 * i + c] = h + l;
+        }
+        if (energy) {
+          double s[4] = {0, 0, 0, 0};
+          for (int u = 0; u < nt; ++u)
+            for (int c = 0; c < 4; ++c) s[c] += acc_[u].energy[kEnergyRow * i + c];
+          energy[i] = s[0] + s[1];
+          virial_[i] = s[2] + s[3];
+        }
+      }
+    }
+    if (closest2 < closest_ * closest_) {
+      std::ostringstream os;
+      os << "lj: at step " << ctx.step() << " two atoms are " << std::sqrt(closest2)
+         << " apart, closer than " << closest_
+         << ", where pair forces leave the range of the exact sums (the system is unstable, "
+            "the time step too large, or atoms overlap in the input)";
+      throw RunError(os.str());
     }
   }
   static double* forces(Particles& P) { return P.owned() ? P.integ(0) : nullptr; }
 
-  void buildLists(Context& ctx) { lists_.build(ctx, ctx.cellSize()); }
+  // Positions packed four to a row (32 bytes), a denser copy of the alterable table for
+  // the kernel's scattered reads.
+  void packPositions(const Particles& P) const {
+    const long nLocal = static_cast<long>(P.local());
+    pos_.resize(4 * nLocal);
+#pragma omp parallel for schedule(static)
+    for (long j = 0; j < nLocal; ++j) std::copy_n(P.alter(j), 3, &pos_[4 * j]);
+  }
+  void buildLists(Context& ctx) {
+    packPositions(ctx.particles);
+    lists_.build(ctx, pos_.data(), 4, ctx.cellSize());
+  }
+
+  struct Accumulator {
+    std::vector<double> force, energy;
+  };
 
   PairLJ pair_;
+  Grid forceGrid_, energyGrid_;
+  double closest_ = 0;  // closest pair allowed
   double mass_ = 1, skin_ = 0.3, dt_ = 0.005;
   VerletList lists_;
   std::vector<double> energy_;
   mutable std::vector<KernelScratch> scratch_;  // one per OpenMP thread
   mutable std::vector<double> pos_;             // packed positions for the kernel
   mutable std::vector<double> virial_;          // per owned particle (globals)
+  mutable std::vector<Accumulator> acc_;        // one per OpenMP thread
 };
 
 PDQ_REGISTER_MODEL(LennardJones, "lj",

@@ -1,9 +1,16 @@
 #pragma once
-// Verlet neighbour lists: for every owned particle, all particles (owned or ghost) within
-// a radius at the time of the build, found through the engine's cells and SORTED BY
-// GLOBAL ID. A force summed along such a list adds its terms in an order that depends on
-// neither the memory layout, the processor grid nor the moment of the last rebuild, which
-// keeps results bitwise identical on any number of ranks and threads.
+// Half Verlet neighbour lists: for every owned particle i, the owned particles j > i and
+// all the ghosts closer than a radius at the time of the build, found through the
+// engine's cells in its cell order. A pair of owned particles appears once (its force is
+// computed once and added to both, Newton's third law); a pair with a ghost appears in
+// the owned particle's list only (the ghost's own rank computes its side). The lists
+// carry no summation order: the kernel sums exactly (see kernel.hpp), so any order of the
+// pairs gives the same bits.
+//
+//
+// The radius is the engine's cell edge: the engine shuffles (and the model rebuilds)
+// before any particle moved more than half of (that edge - rc), so until then no pair
+// closer than rc can be missing.
 #include <cstdint>
 #include <vector>
 
@@ -13,26 +20,26 @@ namespace pdq::lj {
 
 class VerletList {
  public:
-  void build(const Context& ctx, double radius);
+  // pos: packed positions of the local particles, `stride` doubles a row (x, y, z first).
+  void build(const Context& ctx, const double* pos, std::size_t stride, double radius);
 
+  // Partners of owned particle i: [begin, ghosts) owned partners, [ghosts, end) ghosts.
   const std::uint32_t* begin(std::size_t i) const { return index_.data() + start_[i]; }
+  const std::uint32_t* ghosts(std::size_t i) const { return index_.data() + ghost_[i]; }
   const std::uint32_t* end(std::size_t i) const { return index_.data() + start_[i + 1]; }
   std::size_t size() const { return start_.empty() ? 0 : start_.size() - 1; }
   std::size_t entries() const { return index_.size(); }
   std::size_t longest() const { return longest_; }
 
  private:
-  struct Scratch {                            // one per thread
-    std::vector<std::uint32_t> out;           // the lists of the thread's particles
-    std::vector<std::uint32_t> near;          // kept candidates of one particle
-    std::vector<std::uint64_t> pairs, spare;  // (rank << 32 | particle in block) of a block
-    std::vector<std::size_t> cursor;
+  struct Scratch {                    // one per thread
+    std::vector<std::uint32_t> out;   // the lists of the thread's particles
+    std::vector<std::uint32_t> near;  // kept candidates of one particle
+    std::vector<std::size_t> count;   // list length and owned partners, per particle
   };
-  std::vector<std::size_t> start_;
+  std::vector<std::size_t> start_, ghost_;
   std::size_t longest_ = 0;
   std::vector<std::uint32_t> index_;
-  std::vector<std::uint32_t> rank_, byRank_;  // local index <-> position in global-ID order
-  std::vector<double> xyz_;                   // packed positions during a build
   std::vector<Scratch> threads_;
 };
 
