@@ -1,6 +1,7 @@
 // MPLM scenarios: a scenario whose lattice spacing disagrees with the model's is refused;
 // supports, bearings and displacement control set by [[particles.set]] act as they should;
-// mplm_beam's laboratory specimens (overhangs, a notch) are where the keys put them.
+// mplm_beam's laboratory specimens (overhangs, a notch, steel plates) are where the keys put
+// them, and its plates spread a load and turn on their supports.
 #include "scenario/scenario.hpp"
 
 #include <fmt/format.h>
@@ -212,6 +213,128 @@ line_load = 0
       EXPECT_NE(std::string(e.what()).find("bad.toml:5:"), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
     }
+  }
+}
+
+// mplm_beam's steel plates: a loading plate at midspan over the top particles within
+// plate_width/2 and bearing plates under the supports, each plate particle one spacing
+// above or below the face particle it covers, all of them linked, the load shared by the
+// loading plate's particles, each bearing plate held at its particle on the support's line
+// only. Loaded elastically to equilibrium, the loading plate moves as one: the spread of its
+// particles' vertical displacements is under a fifth of the covered particles' spread when
+// the same load is put on them directly; each bearing plate turns on its pin (its end
+// particles move opposite ways) and no other particle is held.
+TEST(MplmScenarios, BeamWithSteelPlates) {
+  const double s = 0.02, pitch = std::sqrt(3.0) / 2 * s, over = 0.04, mid = 0.16, tol = 1e-9;
+  auto text = [](const std::string& plates) {
+    return fmt::format(R"([model]
+name = "mplm2d"
+damage = false
+[particles]
+generator = "mplm_beam"
+span = 0.24
+depth = 0.08
+overhang = 0.04
+support_width = 0.04
+line_load = 0
+{}
+[solver]
+kind = "quasi_static"
+tolerance = 1e-6
+max_iterations = 100000
+load_steps = 1
+)",
+                       plates);
+  };
+  const double top = 4 * pitch;
+  const std::string noPlates = R"([[particles.set]]
+attribute = "load_y"
+value = -333.33333333333333
+x = [0.139, 0.181]
+y = [0.06, 0.08])";
+  const std::string plates =
+      "load_plates = [0.16]\nplate_width = 0.04\nplate_load = 1000\nbearing_plates = true";
+  // Vertical displacement of every particle by position after the run.
+  struct Moved {
+    double x, y, uy;
+    bool steel;
+    int constraint;
+  };
+  auto run = [&](const std::string& dir, const std::string& extra) {
+    Scenario sc = scenarioFrom(dir + "/beam.toml", text(extra));
+    double load = 0;
+    for (std::size_t k = 0; k < sc.problem.particles.size(); ++k)
+      load += sc.problem.particles.fixedRow(k)[LOAD_Y];
+    EXPECT_NEAR(load, -1000, 1e-9);
+    Comm comm;
+    auto sim = simulation(sc, comm);
+    sim->run();
+    std::vector<Moved> out;
+    Particles& P = sim->particles();
+    for (std::size_t i = 0; i < P.owned(); ++i) {
+      const double* f = P.fixed(i);
+      out.push_back({f[FX_X], f[FX_Y], P.alter(i)[AY] - f[FX_Y], isSteel(f),
+                     static_cast<int>(f[CONSTRAINT])});
+    }
+    return out;
+  };
+  auto coveredSpread = [&](const std::vector<Moved>& ps) {
+    double lo = 1e300, hi = -1e300;
+    int n = 0;
+    for (const Moved& m : ps)
+      if (!m.steel && std::fabs(m.y - top) < tol && std::fabs(m.x - mid) <= 0.02 + tol) {
+        lo = std::min(lo, m.uy);
+        hi = std::max(hi, m.uy);
+        ++n;
+      }
+    EXPECT_EQ(n, 3);
+    EXPECT_LT(hi, 0.0);
+    return hi - lo;
+  };
+  const auto bare = run("mplm_plates/bare", noPlates);
+  const auto plated = run("mplm_plates/plated", plates);
+  std::vector<Moved> loading, leftBearing;
+  int held = 0;
+  for (const Moved& m : plated) {
+    if (m.constraint != 0) {
+      ++held;
+      EXPECT_TRUE(m.steel);
+      EXPECT_NEAR(m.y, -s, tol);
+      EXPECT_TRUE(std::fabs(m.x - over) < tol || std::fabs(m.x - (mid * 2 - over)) < tol) << m.x;
+    }
+    if (m.steel && std::fabs(m.y - (top + s)) < tol) loading.push_back(m);
+    if (m.steel && std::fabs(m.y + s) < tol && m.x < mid) leftBearing.push_back(m);
+  }
+  EXPECT_EQ(held, 2);
+  ASSERT_EQ(loading.size(), 3u);
+  EXPECT_NEAR(loading.front().x, mid - s, tol);
+  EXPECT_NEAR(loading.back().x, mid + s, tol);
+  ASSERT_EQ(leftBearing.size(), 3u);
+  EXPECT_EQ(leftBearing[1].uy, 0.0);
+  EXPECT_LT(leftBearing.front().uy * leftBearing.back().uy, 0.0);  // turned on its pin
+  const double spreadBare = coveredSpread(bare);
+  const auto [lo, hi] = std::minmax_element(
+      loading.begin(), loading.end(), [](const Moved& a, const Moved& b) { return a.uy < b.uy; });
+  EXPECT_LT(hi->uy - lo->uy, 0.2 * spreadBare) << hi->uy - lo->uy << " against " << spreadBare;
+
+  // Every plate particle bonded to the concrete; a plate that covers nothing is refused.
+  Scenario sc = scenarioFrom("mplm_plates/built.toml", text(plates));
+  int steel = 0;
+  for (std::size_t k = 0; k < sc.problem.particles.size(); ++k) {
+    const double* f = sc.problem.particles.fixedRow(k);
+    if (isSteel(f)) {
+      ++steel;
+      EXPECT_EQ(f[LINK], 1.0);
+      EXPECT_NEAR(f[AREA], 0.025 * 0.12, 1e-15);
+    }
+  }
+  EXPECT_EQ(steel, 9);
+  try {
+    scenarioFrom("mplm_plates/bad.toml", text("load_plates = [0.17]\nplate_width = 0.01"));
+    ADD_FAILURE() << "a plate covering no particle was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.toml:5:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("covers no top particle"), std::string::npos) << e.what();
   }
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <numeric>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
@@ -79,20 +80,45 @@ ParticleSet beam(const BeamSpec& b) {
       throw std::invalid_argument(std::string(what) + ", " + numberText(x) +
                                   ", is not a whole number of spacings: no lattice particle "
                                   "on the bottom face at the support");
+  // A steel plate at dy from the face particles `covered` (a row, in X order): its indices.
+  const double plateArea = b.plateThickness * b.thickness;
+  const double plateInertia = b.thickness * std::pow(b.plateThickness, 3) / 12;
+  auto addPlateAt = [&](const std::vector<std::size_t>& covered, double dy) {
+    std::vector<prep::Point> points;
+    for (std::size_t k : covered)
+      points.push_back({ps.fixedRow(k)[0], ps.fixedRow(k)[1] + dy, 0.0});
+    std::vector<std::size_t> idx(points.size());
+    std::iota(idx.begin(), idx.end(), ps.size());
+    addPlate(ps, points, plateArea, plateInertia, barId++);
+    return idx;
+  };
   if (b.supports != "none") {
     // Without an overhang the supports reach in from the ends; with one, they are centred
     // on the support lines.
     const double reach = b.overhang > 0 ? b.supportWidth / 2 : b.supportWidth;
     const double lo = b.overhang > 0 ? b.overhang : 0, hi = length - lo;
-    const auto left = select(ps, [&](const double* f) {
+    auto left = select(ps, [&](const double* f) {
       return isConcrete(f) && f[1] < tol && std::fabs(f[0] - lo) <= reach + tol;
     });
-    const auto right = select(ps, [&](const double* f) {
+    auto right = select(ps, [&](const double* f) {
       return isConcrete(f) && f[1] < tol && std::fabs(f[0] - hi) <= reach + tol;
     });
+    auto corner = concreteAt(lo, 0);
+    if (b.bearingPlates) {
+      // Held at the plate's particle on the support's line only.
+      auto onLine = [&](const std::vector<std::size_t>& plate, double x) {
+        std::vector<std::size_t> held;
+        for (std::size_t k : plate)
+          if (std::fabs(ps.fixedRow(k)[0] - x) < tol) held.push_back(k);
+        return held;
+      };
+      left = onLine(addPlateAt(left, -s), lo);
+      right = onLine(addPlateAt(right, -s), hi);
+      corner = left;
+    }
     if (b.supports == "bearings") {
       constrain(ps, left, REST_Y);
-      constrain(ps, concreteAt(lo, 0), FIX_X);
+      constrain(ps, corner, FIX_X);
       constrain(ps, right, REST_Y);
     } else {
       constrain(ps, left, FIX_X | FIX_Y);
@@ -101,6 +127,17 @@ ParticleSet beam(const BeamSpec& b) {
   }
   const auto top = select(ps, [&](const double* f) { return isConcrete(f) && f[1] > yTop - tol; });
   if (b.lineLoad != 0) loadUniform(ps, top, 0, 0, length, 0, -b.lineLoad * length);
+  for (const double x : b.loadPlates) {
+    std::vector<std::size_t> covered;
+    for (std::size_t k : top)
+      if (std::fabs(ps.fixedRow(k)[0] - x) <= b.plateWidth / 2 + tol) covered.push_back(k);
+    if (covered.empty())
+      throw std::invalid_argument("the loading plate at x = " + numberText(x) + " of width " +
+                                  numberText(b.plateWidth) +
+                                  " covers no top particle: widen it (plate_width)");
+    const auto plate = addPlateAt(covered, s);
+    load(ps, plate, 0, -b.plateLoad / static_cast<double>(plate.size()));
+  }
   // The bottom particles nearest midspan (either side of a notch).
   double nearest = std::numeric_limits<double>::max();
   for (std::size_t k = 0; k < ps.size(); ++k) {
@@ -185,6 +222,9 @@ SizeEstimate beamSize(const Params& p, const Params& model) {
     e.extraParticles += prep::latticeSteps(length - b.stirrupFirst + b.stirrupSpacing / 2,
                                            b.stirrupFirst, b.stirrupSpacing) *
                         (std::ceil((b.depth - b.stirrupCover - b.barCentroid) / s) + 1);
+  const double plateSites = b.loadPlates.size() * (b.plateWidth / s + 1) +
+                            (b.bearingPlates ? 2 * (b.supportWidth / s + 1) : 0);
+  e.extraParticles += plateSites;
   // Steel interacts with its neighbours along its bar, and every other steel particle (a
   // link) with the concrete within s: about pi s^2 / (s (sqrt(3)/2) s) of it.
   e.extraPairs = e.extraParticles * (1 + std::numbers::pi / prep::hexPitch(1) / 2);
@@ -244,6 +284,19 @@ BeamSpec beamSpec(const Params& p, const Params& model) {
   b.notchWidth = p.number("notch_width", b.spacing, 0.0, b.span);
   b.supports = p.choice("supports", b.supports, {"simple", "bearings", "none"});
   b.lineLoad = p.number("line_load", b.lineLoad, -big, big);
+  if (p.raw("load_plates")) b.loadPlates = p.numbers("load_plates");
+  const double length = b.span + 2 * b.overhang;
+  for (const double x : b.loadPlates)
+    if (x < 0 || x > length) {
+      const auto v = p.raw("load_plates");
+      throw InputError(v->file, v->line,
+                       "load_plates: " + numberText(x) + " is outside the beam, [0, " +
+                           numberText(length) + "] m");
+    }
+  b.plateWidth = p.number("plate_width", b.plateWidth, 0.0, length);
+  b.plateLoad = p.number("plate_load", b.plateLoad, -big, big);
+  b.plateThickness = p.number("plate_thickness", b.plateThickness, 1e-300, big);
+  b.bearingPlates = p.flag("bearing_plates", b.bearingPlates);
   return b;
 }
 
@@ -263,7 +316,7 @@ PDQ_REGISTER_GENERATOR(plateGenerator, "mplm_plate",
 PDQ_REGISTER_GENERATOR(beamGenerator, "mplm_beam",
                        "MPLM simply supported beam with bars and stirrups (thesis §4.4.3-6): "
                        "span, depth, overhang, notch_*, bar_*, stirrup_*, supports, "
-                       "support_width, line_load\n"
+                       "support_width, line_load, load_plates, plate_*, bearing_plates\n"
                        "  span, depth       in m (default 1.16, 0.26)\n"
                        "  overhang          beyond each support, m (default 0: supports at the "
                        "ends); the length is span + 2 overhang\n"
@@ -278,6 +331,12 @@ PDQ_REGISTER_GENERATOR(beamGenerator, "mplm_beam",
                        "support)\n"
                        "  line_load         on the top layer at load_scale 1, N/m (default "
                        "1e3)\n"
+                       "  load_plates       centres of rigid steel loading plates on the top "
+                       "face, m along the beam (default none); plate_width 0.1 (the top "
+                       "particles within half of it under each), plate_load 1e3 (N down on "
+                       "each at load_scale 1), plate_thickness 0.025 m\n"
+                       "  bearing_plates    each support a steel plate under its particles, "
+                       "held on the support's line only: free to turn (default false)\n"
                        "  spacing, thickness: the [model]'s\n"
                        "  IDs               from 0: the concrete row by row from the bottom "
                        "(the notch left out), then each bar's particles along it");

@@ -10,6 +10,7 @@
 // so particles and interactions can never disagree on them. Each specimen is built for a
 // unit load (load_scale = 1 gives `stress` on the plate's section, `line_load` on the beam).
 #include <string>
+#include <vector>
 
 #include "engine/params.hpp"
 #include "engine/particle_set.hpp"
@@ -54,9 +55,20 @@ struct BeamSpec {
   // "none": the scenario sets its own.
   std::string supports = "simple";
   double lineLoad = 1e3;  // peak uniform load on the top layer at load_scale 1 (N/m); 0: none
+  // Steel plates, each a row of steel particles one spacing above (loading) or below
+  // (bearing) the face particles it covers, each bonded to the one it covers; of
+  // plateThickness (m) by the beam's thickness in section, so much stiffer in bending than
+  // the concrete under it that the covered particles move together. A loading plate is
+  // centred at each of loadPlates (m along the beam) over the top particles within
+  // plateWidth/2, and carries plateLoad (N, downward, shared equally by its particles) at
+  // load_scale 1. bearingPlates: each support is a plate under its supported particles
+  // held at its particle on the support's line only (a pin or roller the plate turns on).
+  std::vector<double> loadPlates;
+  double plateWidth = 0.1, plateLoad = 1e3, plateThickness = 0.025;
+  bool bearingPlates = false;
 };
 // std::invalid_argument when the span or the overhang is not a whole number of spacings,
-// or the notch is narrower than the spacing.
+// the notch is narrower than the spacing, or a loading plate covers no top particle.
 ParticleSet beam(const BeamSpec& spec);
 
 // The specimen a generator table describes (InputError naming the key's line when a value

@@ -23,18 +23,31 @@ void addConcrete(ParticleSet& ps, const std::vector<std::array<double, 2>>& poin
   for (const auto& p : points) ps.add(static_cast<Gid>(ps.size()), p[0], p[1], 0.0);
 }
 
-void addSteel(ParticleSet& ps, const std::vector<prep::Point>& points,
-              const prep::BarSection& section, int barId) {
+namespace {
+// Steel particles of bar `barId`; every `linkEvery`-th one (the first included) linked.
+void appendSteel(ParticleSet& ps, const std::vector<prep::Point>& points, double area,
+                 double secondMoment, int barId, std::size_t linkEvery) {
   for (std::size_t k = 0; k < points.size(); ++k) {
     const std::size_t i =
         ps.add(static_cast<Gid>(ps.size()), points[k][0], points[k][1], points[k][2]);
     double* f = ps.fixedRow(i);
     f[MATERIAL] = STEEL;
     f[BAR] = barId;
-    f[LINK] = k % 2 == 0 ? 1.0 : 0.0;
-    f[AREA] = section.area();
-    f[SECOND_MOMENT] = section.secondMoment();
+    f[LINK] = k % linkEvery == 0 ? 1.0 : 0.0;
+    f[AREA] = area;
+    f[SECOND_MOMENT] = secondMoment;
   }
+}
+}  // namespace
+
+void addSteel(ParticleSet& ps, const std::vector<prep::Point>& points,
+              const prep::BarSection& section, int barId) {
+  appendSteel(ps, points, section.area(), section.secondMoment(), barId, 2);
+}
+
+void addPlate(ParticleSet& ps, const std::vector<prep::Point>& points, double area,
+              double secondMoment, int barId) {
+  appendSteel(ps, points, area, secondMoment, barId, 1);
 }
 
 void addBar(ParticleSet& ps, const prep::Bar& bar, double s, int barId) {

@@ -22,6 +22,10 @@ void addSteel(ParticleSet& ps, const std::vector<prep::Point>& points,
               const prep::BarSection& section, int barId);
 // A straight bar's steel particles (prep::barPoints).
 void addBar(ParticleSet& ps, const prep::Bar& bar, double s, int barId);
+// Appends a steel plate as bar `barId` at the points: every particle bonded to the concrete
+// within one spacing, of the given section area and second moment.
+void addPlate(ParticleSet& ps, const std::vector<prep::Point>& points, double area,
+              double secondMoment, int barId);
 
 // Indices of the particles whose fixed row satisfies `pick`.
 std::vector<std::size_t> select(const ParticleSet& ps,
