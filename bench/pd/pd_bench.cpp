@@ -11,6 +11,11 @@
 //   pd_bench check_cost N STEPS [RUNS]      the block (PMB) checked at every second
 //                                           step: the instability check's cost (CPU
 //                                           and wall time, checked steps over the others)
+//   pd_bench check_steps N STEPS EVERY      the block (PMB) checked every EVERY steps (0:
+//                                           never): prints its CPU time; run under
+//                                           valgrind --tool=callgrind with EVERY 1 and 0,
+//                                           the instructions of Simulation::advance give
+//                                           the checks' share of a step
 //   pd_bench checkpoint_cost N STEPS EVERY  the block (PMB) with and without a checkpoint
 //                                           every EVERY steps: their cost
 //   pd_bench compare FILE_A FILE_B          largest |u_a - u_b| over the largest |u_a|
@@ -178,9 +183,9 @@ int block(int argc, char** argv, Comm& comm) {
   return 0;
 }
 
-// The cost of the instability check every step (check_cost N STEPS [RUNS]) or of
-// checkpoints every EVERY steps (checkpoint_cost N STEPS EVERY): the PMB block run without
-// it and with it.
+// The cost of the instability check every step (check_cost N STEPS [RUNS]; check_steps N
+// STEPS EVERY for instruction counts) or of checkpoints every EVERY steps (checkpoint_cost
+// N STEPS EVERY): the PMB block run without it and with it.
 //
 // The checks: RUNS runs (default 3) of the block checked at every second step, each
 // step's CPU time (the busiest rank's, all its threads) and wall time taken alone. A machine shared
@@ -190,21 +195,23 @@ int block(int argc, char** argv, Comm& comm) {
 // with the median and range over runs.
 // Checkpoints: three runs with and three without, alternately, the fastest of each kind.
 int featureCost(int argc, char** argv, Comm& comm) {
-  const bool checkpoints = std::string(argv[1]) == "checkpoint_cost";
-  if (argc < (checkpoints ? 5 : 4))
+  const std::string what = argv[1];
+  const bool checkpoints = what == "checkpoint_cost", counted = what == "check_steps";
+  if (argc < (checkpoints || counted ? 5 : 4))
     throw InputError("pd_bench", 0,
-                     "usage: pd_bench check_cost N STEPS [RUNS] | checkpoint_cost N STEPS EVERY");
+                     "usage: pd_bench check_cost N STEPS [RUNS] | check_steps N STEPS EVERY | "
+                     "checkpoint_cost N STEPS EVERY");
   lammps::Block bl;
   bl.n = std::stoi(argv[2]);
   const long steps = std::stol(argv[3]);
-  const long every = checkpoints ? std::stol(argv[4]) : 0;
+  const long every = checkpoints || counted ? std::stol(argv[4]) : 0;
   const std::string dir = checkpoints ? "pd_checkpoint_cost_out" : "pd_check_cost_out";
   auto simulation = [&](bool checks, bool written) {
     Problem pb = makeProblem("pmb", lammps::blockParams(bl, "pmb"), {});
     pb.particles = lammps::blockParticles(bl, pb.model->schema());
     pb.run.steps = steps;
     pb.run.outDir = dir;
-    pb.run.checkEvery = checks ? 2 : 0;
+    pb.run.checkEvery = counted ? every : checks ? 2 : 0;
     pb.output.checkpointEvery = every;
     pb.output.finalRestart = false;
     auto out = std::make_unique<CheckpointOutput>(pb.output, 0);
@@ -212,6 +219,13 @@ int featureCost(int argc, char** argv, Comm& comm) {
     if (written) sim->addOutput(std::move(out));
     return sim;
   };
+  if (counted) {
+    const RunTime t = timedRun(*simulation(true, false), comm);
+    if (comm.root())
+      std::printf("pmb N=%d^3 steps=%ld ranks=%d checked every %ld steps (0: never): %.4f s CPU\n",
+                  bl.n, steps, comm.size(), every, t.cpu);
+    return 0;
+  }
   if (!checkpoints) {
     const int runs = argc > 4 ? std::stoi(argv[4]) : 3;
     if (runs < 1) throw InputError("pd_bench", 0, "RUNS must be at least 1");
@@ -366,13 +380,16 @@ int main(int argc, char** argv) {
     const std::string what = argc > 1 ? argv[1] : "";
     if (what == "cantilever") return cantilever(argc, argv, comm);
     if (what == "block") return block(argc, argv, comm);
-    if (what == "check_cost" || what == "checkpoint_cost") return featureCost(argc, argv, comm);
+    if (what == "check_cost" || what == "check_steps" || what == "checkpoint_cost")
+      return featureCost(argc, argv, comm);
     if (what == "compare") return comm.root() ? compare(argc, argv) : 0;
     if (what == "bandwidth") return comm.root() ? bandwidth() : 0;
     if (what == "divider") return comm.root() ? divider() : 0;
-    std::fprintf(stderr,
-                 "usage: pd_bench "
-                 "cantilever|block|check_cost|checkpoint_cost|compare|bandwidth|divider ...\n");
+    std::fprintf(
+        stderr,
+        "usage: pd_bench "
+        "cantilever|block|check_cost|check_steps|checkpoint_cost|compare|bandwidth|divider "
+        "...\n");
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pd_bench: %s\n", e.what());

@@ -22,11 +22,24 @@ int column(const std::vector<std::string>& names, const std::string& name, const
                          "', which is not in its " + table + " attributes");
 }
 
-// Bit 63 of the result is set when x is not finite (its exponent all ones): no branch,
-// and no comparison for a NaN to fool.
-inline std::uint64_t notFiniteBit(double x) {
-  return (std::bit_cast<std::uint64_t>(x) & 0x7ff0000000000000ull) + 0x0010000000000000ull;
+// Nonzero when x is not finite: x − x is +0 for every finite x and NaN for ±inf and NaN,
+// so the OR of many such bits tells whether any is not finite (no branch, no comparison
+// for a NaN to fool).
+inline std::uint64_t notFiniteBits(double x) { return std::bit_cast<std::uint64_t>(x - x); }
+
+[[gnu::always_inline]] inline bool anyNotFiniteIn(const double* a, std::size_t n) {
+  std::uint64_t bits = 0;
+  for (std::size_t k = 0; k < n; ++k) bits |= notFiniteBits(a[k]);
+  return bits != 0;
 }
+bool anyNotFinitePortable(const double* a, std::size_t n) { return anyNotFiniteIn(a, n); }
+[[gnu::target("avx2")]] bool anyNotFiniteAvx2(const double* a, std::size_t n) {
+  return anyNotFiniteIn(a, n);
+}
+
+// The integrator moves particles in blocks of this many, each looked at by the instability
+// checks while it is in cache.
+constexpr std::size_t kBlock = 128;
 
 }  // namespace
 
@@ -188,6 +201,7 @@ void Integrator::resolve(const Schema& s) {
   for (std::size_t k = 0; nR_ && k < nq; ++k)
     quat_[k] = column(s.alter, m.orientation[k], "alterable");
   if (rotation_ == Rotation::Planar) pos_[nT_] = quat_[0];
+  anyNotFinite_ = __builtin_cpu_supports("avx2") ? anyNotFiniteAvx2 : anyNotFinitePortable;
   // Every integ column a force or moment, in order: the watch sweeps them as one array.
   forcesOnly_ = s.nInteg() == nT_ + nR_;
   for (int d = 0; d < nT_ + nR_; ++d) forcesOnly_ &= frc_[d] == d;
@@ -282,22 +296,27 @@ void Integrator::step(Context& ctx) {
   const bool held = L.held(tNow);
   if (held && L.holdDampingRatio > 0 && holdDamping_ < 0) holdDamping_ = rayleighDamping(ctx, fNow);
   const double c = damping_ + (held && holdDamping_ > 0 ? holdDamping_ : 0.0);
-  const long nOwned = static_cast<long>(n);
   Watch* const w = watch_;
   watch_ = nullptr;
 #pragma omp parallel
   {
     Watch mine;  // this thread's share of the watch
     if (w) mine.tracked = w->tracked;
-    // In blocks, each looked at by the watch while it is in cache.
-    constexpr long kBlock = 128;
-    const long nBlocks = (nOwned + kBlock - 1) / kBlock;
+    const long nBlocks = static_cast<long>((n + kBlock - 1) / kBlock);
 #pragma omp for schedule(static) nowait
     for (long k = 0; k < nBlocks; ++k) {
-      const long begin = k * kBlock, end = std::min(nOwned, begin + kBlock);
-      for (long i = begin; i < end; ++i)
-        advance(P, static_cast<std::size_t>(i), h, kick, fNow, fNext, c);
-      if (w) seeRange(P, static_cast<std::size_t>(begin), static_cast<std::size_t>(end), h, mine);
+      const std::size_t begin = static_cast<std::size_t>(k) * kBlock;
+      const std::size_t end = std::min(n, begin + kBlock);
+      if (!w) {
+        for (std::size_t i = begin; i < end; ++i) advance<false>(P, i, h, kick, fNow, fNext, c);
+        continue;
+      }
+      double moves[kBlock], most = 0;
+      for (std::size_t i = begin; i < end; ++i) {
+        moves[i - begin] = advance<true>(P, i, h, kick, fNow, fNext, c);
+        most = std::max(most, moves[i - begin]);
+      }
+      seeBlock(P, begin, end, moves, most, h, mine);
     }
     if (w) {
 #pragma omp critical(pdq_integrator_watch)
@@ -307,42 +326,46 @@ void Integrator::step(Context& ctx) {
   if (w) w->done = true;
 }
 
-void Integrator::advance(Particles& P, std::size_t i, double h, double kick, double fNow,
-                         double fNext, double c) const {
+// Inlined in the step's loops, so that the move is taken from registers.
+template <bool kMove>
+[[gnu::always_inline]] inline double Integrator::advance(Particles& P, std::size_t i, double h,
+                                                         double kick, double fNow, double fNext,
+                                                         double c) const {
   const int nLinear = nT_ + (rotation_ == Rotation::Planar ? 1 : 0);
   double* a = P.alter(i);
   const double* X = P.fixed(i);
   const double* F = P.integ(i);
   const Body& b = bodies_[i];
   const double invM = 1 / b.mass, invI = 1 / b.inertia;
+  double moved = 0;  // the square of the move v Δt, the velocities' final values
   for (int d = 0; d < nLinear; ++d) {
     const bool rot = d >= nT_;
     const int p = pos_[d], v = vel_[d];
     const double ref = rot ? 0.0 : X[p];
-    switch (b.constraint[d]) {
-      case Constraint::Prescribed: {
-        const double target = ref + b.value[d] * fNext;
-        a[v] = (target - a[p]) / h;
-        a[p] = target;
-        continue;
-      }
-      case Constraint::KeepVelocity:
-        break;
-      default: {
+    if (b.constraint[d] == Constraint::Prescribed) {
+      const double target = ref + b.value[d] * fNext;
+      a[v] = (target - a[p]) / h;
+      a[p] = target;
+    } else {
+      if (b.constraint[d] != Constraint::KeepVelocity) {
         const double inv = rot ? invI : invM;
         double acc = perMass_ && !rot ? F[frc_[d]] + b.load[d] * fNow * inv
                                       : (F[frc_[d]] + b.load[d] * fNow) * inv;
         acc -= c * a[v];
         a[v] += acc * kick;
       }
+      a[p] += a[v] * h;
+      if (b.constraint[d] == Constraint::Resting && a[p] < ref) {
+        a[p] = ref;  // on the support: no penetration, no bounce
+        a[v] = 0;
+      }
     }
-    a[p] += a[v] * h;
-    if (b.constraint[d] == Constraint::Resting && a[p] < ref) {
-      a[p] = ref;  // on the support: no penetration, no bounce
-      a[v] = 0;
+    if (kMove && !rot) {
+      const double s = a[v] * h;
+      moved += s * s;
     }
   }
-  if (rotation_ != Rotation::Spatial) return;
+  if (rotation_ != Rotation::Spatial) return moved;
   Vec phi;
   for (int k = 0; k < 3; ++k) {
     const int d = nT_ + k, v = vel_[d];
@@ -355,64 +378,68 @@ void Integrator::advance(Particles& P, std::size_t i, double h, double kick, dou
     phi[k] = a[v] * h;
   }
   turn(P, i, phi.data());
+  return moved;
 }
 
 bool Integrator::notFinite(const Particles& P, std::size_t i) const {
   const double* a = P.alter(i);
   const double* F = P.integ(i);
   std::uint64_t bits = 0;
-  for (int k = 0; k < nA_; ++k) bits |= notFiniteBit(a[k]);
-  for (int d = 0; d < nT_ + nR_; ++d) bits |= notFiniteBit(F[frc_[d]]);
-  return (bits >> 63) != 0;
+  for (int k = 0; k < nA_; ++k) bits |= notFiniteBits(a[k]);
+  for (int d = 0; d < nT_ + nR_; ++d) bits |= notFiniteBits(F[frc_[d]]);
+  return bits != 0;
 }
 
-// The move v Δt of owned particle i (its square), its components in `step`.
-inline double moveOf(const Particles& P, std::size_t i, double h, int nT, const int* pos,
-                     const int* vel, std::array<double, 3>& step) {
+double Integrator::moveSquared(const Particles& P, std::size_t i, double h) const {
   const double* a = P.alter(i);
   double m = 0;
-  for (int d = 0; d < nT; ++d) {
-    step[pos[d]] = a[vel[d]] * h;
-    m += step[pos[d]] * step[pos[d]];
+  for (int d = 0; d < nT_; ++d) {
+    const double s = a[vel_[d]] * h;
+    m += s * s;
   }
   return m;
 }
 
-void Integrator::seeRange(const Particles& P, std::size_t begin, std::size_t end, double h,
-                          Watch& w) const {
-  if (begin >= end) return;
-  // Rows are contiguous: one branch-free sweep over the range's attributes (and its forces
-  // when every integ column is one), in cache since the step has just moved them.
-  std::uint64_t bits = 0;
-  const double* a = P.alter(begin);
-  const std::size_t nAll = (end - begin) * static_cast<std::size_t>(nA_);
-  for (std::size_t k = 0; k < nAll; ++k) bits |= notFiniteBit(a[k]);
-  if (forcesOnly_) {
-    const double* f = P.integ(begin);
-    const std::size_t nF = (end - begin) * static_cast<std::size_t>(nT_ + nR_);
-    for (std::size_t k = 0; k < nF; ++k) bits |= notFiniteBit(f[k]);
-  } else {
-    for (std::size_t i = begin; i < end; ++i)
-      for (int d = 0; d < nT_ + nR_; ++d) bits |= notFiniteBit(P.integ(i)[frc_[d]]);
-  }
-  w.nonFinite |= (bits >> 63) != 0;
+// The move v Δt of a particle with alterable attributes `a`, by position column.
+inline std::array<double, 3> moveOf(const double* a, double h, int nT, const int* pos,
+                                    const int* vel) {
   std::array<double, 3> step{};
-  double most = 0;
-  for (std::size_t i = begin; i < end; ++i)
-    most = std::max(most, moveOf(P, i, h, nT_, pos_.data(), vel_.data(), step));
+  for (int d = 0; d < nT; ++d) step[pos[d]] = a[vel[d]] * h;
+  return step;
+}
+
+void Integrator::seeBlock(const Particles& P, std::size_t begin, std::size_t end,
+                          const double* moves, double most, double h, Watch& w) const {
+  if (begin >= end) return;
+  // Rows are contiguous: one branch-free sweep over the block's attributes (and its forces
+  // when every integ column is one), in cache since the step has just moved them.
+  const std::size_t n = end - begin;
+  bool bad = anyNotFinite_(P.alter(begin), n * static_cast<std::size_t>(nA_));
+  if (forcesOnly_) {
+    bad |= anyNotFinite_(P.integ(begin), n * static_cast<std::size_t>(nT_ + nR_));
+  } else {
+    std::uint64_t bits = 0;
+    for (std::size_t i = begin; i < end; ++i)
+      for (int d = 0; d < nT_ + nR_; ++d) bits |= notFiniteBits(P.integ(i)[frc_[d]]);
+    bad |= bits != 0;
+  }
+  w.nonFinite |= bad;
   if (w.tracked >= begin && w.tracked < end) {
-    moveOf(P, w.tracked, h, nT_, pos_.data(), vel_.data(), w.trackedStep);
+    w.trackedStep = moveOf(P.alter(w.tracked), h, nT_, pos_.data(), vel_.data());
     w.sawTracked = true;
   }
   // Which particle: rarely needed (the largest move so far seldom grows), so looked for
   // only then. Of equal moves the largest ID, so that neither the grid nor the threads
   // choose.
   if (most == 0 || most < w.most) return;
+  const std::size_t before = w.fastest;
   for (std::size_t i = begin; i < end; ++i) {
-    const double m = moveOf(P, i, h, nT_, pos_.data(), vel_.data(), step);
-    if (m > w.most || (m == w.most && P.gid(i) > P.gid(w.fastest)))
-      w.most = m, w.fastest = i, w.fastestStep = step;
+    const double m = moves[i - begin];
+    if (m > w.most || (m == w.most && w.fastest != kNoParticle && P.gid(i) > P.gid(w.fastest)))
+      w.most = m, w.fastest = i;
   }
+  if (w.fastest != before)
+    w.fastestStep = moveOf(P.alter(w.fastest), h, nT_, pos_.data(), vel_.data());
 }
 
 void Integrator::merge(const Particles& P, const Watch& part, Watch& w) {
@@ -424,9 +451,18 @@ void Integrator::merge(const Particles& P, const Watch& part, Watch& w) {
 }
 
 void Integrator::see(Context& ctx, Watch& w) {
-  Particles& P = ctx.particles;
+  const Particles& P = ctx.particles;
   if (!resolved_) resolve(P.schema());
-  seeRange(P, 0, P.owned(), ctx.dt(), w);
+  const double h = ctx.dt();
+  for (std::size_t begin = 0; begin < P.owned(); begin += kBlock) {
+    const std::size_t end = std::min(P.owned(), begin + kBlock);
+    double moves[kBlock], most = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      moves[i - begin] = moveSquared(P, i, h);
+      most = std::max(most, moves[i - begin]);
+    }
+    seeBlock(P, begin, end, moves, most, h, w);
+  }
   w.done = true;
 }
 

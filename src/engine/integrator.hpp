@@ -213,12 +213,17 @@ class Integrator {
   double dofForce(const Particles& P, std::size_t i, int d, double factor) const;
   // Turns the spatial orientation of owned particle i by the rotation vector phi.
   void turn(Particles& P, std::size_t i, const double phi[3]) const;
-  // Owned particle i's step (kick, the loads at fNow, damping c; prescribed values at fNext).
-  void advance(Particles& P, std::size_t i, double h, double kick, double fNow, double fNext,
-               double c) const;
+  // Owned particle i's step (kick, the loads at fNow, damping c; prescribed values at fNext);
+  // with kMove, returns the square of its move v Δt (0 without).
+  template <bool kMove>
+  double advance(Particles& P, std::size_t i, double h, double kick, double fNow, double fNext,
+                 double c) const;
+  // The square of owned particle i's move v Δt.
+  double moveSquared(const Particles& P, std::size_t i, double h) const;
   // Adds owned particles [begin, end), just moved by a step of h, to `w` (one thread's
-  // share).
-  void seeRange(const Particles& P, std::size_t begin, std::size_t end, double h, Watch& w) const;
+  // share): `moves` holds their squared moves, `most` the largest.
+  void seeBlock(const Particles& P, std::size_t begin, std::size_t end, const double* moves,
+                double most, double h, Watch& w) const;
   static void merge(const Particles& P, const Watch& part, Watch& w);
 
   Model& model_;
@@ -230,6 +235,8 @@ class Integrator {
   std::array<int, 4> quat_{};                 // orientation columns
   std::vector<Body> bodies_;
   Watch* watch_ = nullptr;
+  // Whether any of n values is not finite: a vectorised sweep (AVX2 when the CPU has it).
+  bool (*anyNotFinite_)(const double*, std::size_t) = nullptr;
   double holdDamping_ = -1;  // 2 ζ_h ω₁ once computed
   // Quasi-static: ω_max² of M⁻¹K (the fictitious masses' scale), computed once at the first
   // load step, and the iterations done so far; both saved in restart files.
