@@ -48,6 +48,9 @@ class Context {
   void forEachNearby(std::size_t i, F&& f) const {
     cube_.forEachNearby(i, std::forward<F>(f));
   }
+  // The cell of particle i. Owned particles are sorted by cell: consecutive owned
+  // particles with the same cell have the same nearby particles (but for themselves).
+  int cellOf(std::size_t i) const { return cube_.cellOf(i); }
   // Gives the ghosts of a model's own array their owners' values: `values` holds `width`
   // numbers per local particle (owned first, then ghosts; size >= particles.local() x
   // width), e.g. a state-based model's dilatation between its two force passes. Every

@@ -74,6 +74,10 @@ class ProcCube {
     }
   }
 
+  // The local cell of particle i (owned particles are sorted by cell, so owned particles
+  // of one cell are consecutive and share their nearby particles).
+  int cellOf(std::size_t i) const { return cell_[i]; }
+
   const ExchangeStats& stats() const { return stats_; }
   std::uint64_t haloRecordBytes() const;
 

@@ -7,7 +7,7 @@
 namespace pdq::lj {
 
 void VerletList::build(const Context& ctx, const double* pos, std::size_t stride, double radius) {
-  const std::size_t nLocal = ctx.particles.local(), n = ctx.particles.owned();
+  const std::size_t n = ctx.particles.owned();
 
   const double r2max = radius * radius;
   start_.assign(n + 1, 0);
@@ -21,28 +21,52 @@ void VerletList::build(const Context& ctx, const double* pos, std::size_t stride
     threads_.resize(nt);
     Scratch& s = threads_[t];
     s.out.clear();
-    s.near.resize(nLocal);
     const std::size_t lo = n * t / nt, hi = n * (t + 1) / nt;
     s.count.assign(2 * (hi - lo), 0);
+    std::size_t next = 0;  // first gathered owned candidate of index above i
     for (std::size_t i = lo; i < hi; ++i) {
+      // Owned particles of one cell are consecutive and share their candidates: gather
+      // them once per cell (positions packed, owned ones sorted by index, ghosts after).
+      if (i == lo || ctx.cellOf(i) != ctx.cellOf(i - 1)) {
+        s.near.clear();
+        ctx.forEachNearby(i,
+                          [&](std::size_t j) { s.near.push_back(static_cast<std::uint32_t>(j)); });
+        const auto ghosts =
+            std::partition(s.near.begin(), s.near.end(), [&](std::uint32_t j) { return j < n; });
+        std::sort(s.near.begin(), ghosts);
+        s.owned = ghosts - s.near.begin();
+        const std::size_t nc = s.near.size();
+        s.xyz.resize(4 * nc);
+        for (std::size_t k = 0; k < nc; ++k)
+          for (int a = 0; a < 3; ++a) s.xyz[a * nc + k] = pos[s.near[k] * stride + a];
+        next = 0;
+      }
+      while (next < s.owned && s.near[next] <= i) ++next;
       const double* xi = pos + i * stride;
       const double x = xi[0], y = xi[1], z = xi[2];
-      // Candidates kept without branches: partners of higher index (an owned pair is
-      // listed by its lower index; ghosts come after the owned) within the radius.
-      std::uint32_t* c = s.near.data();
+      // Distances first (a loop the compiler vectorises), then the kept ones without
+      // branches: owned partners of higher index, then ghosts.
+      const std::size_t nc = s.near.size();
+      const double *cx = s.xyz.data(), *cy = cx + nc, *cz = cy + nc;
+      double* d2 = s.xyz.data() + 3 * nc;
+      for (std::size_t k = next; k < nc; ++k) {
+        const double dx = cx[k] - x, dy = cy[k] - y, dz = cz[k] - z;
+        d2[k] = dx * dx + dy * dy + dz * dz;
+      }
+      const std::size_t at = s.out.size();
+      s.out.resize(at + nc - next);
+      std::uint32_t* o = s.out.data() + at;
       std::size_t m = 0;
-      ctx.forEachNearby(i, [&](std::size_t j) {
-        if (j < i) return;  // whole cells at a time: a well predicted branch
-        const double* xj = pos + j * stride;
-        const double dx = xj[0] - x, dy = xj[1] - y, dz = xj[2] - z;
-        c[m] = static_cast<std::uint32_t>(j);
-        m += dx * dx + dy * dy + dz * dz < r2max;
-      });
-      std::size_t owned = 0;
-      for (std::size_t k = 0; k < m; ++k)
-        if (c[k] < n) s.out.push_back(c[k]), ++owned;
-      for (std::size_t k = 0; k < m; ++k)
-        if (c[k] >= n) s.out.push_back(c[k]);
+      for (std::size_t k = next; k < s.owned; ++k) {
+        o[m] = s.near[k];
+        m += d2[k] < r2max;
+      }
+      const std::size_t owned = m;
+      for (std::size_t k = s.owned; k < nc; ++k) {
+        o[m] = s.near[k];
+        m += d2[k] < r2max;
+      }
+      s.out.resize(at + m);
       s.count[2 * (i - lo)] = m;
       s.count[2 * (i - lo) + 1] = owned;
     }

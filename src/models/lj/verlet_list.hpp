@@ -1,7 +1,7 @@
 #pragma once
 // Half Verlet neighbour lists: for every owned particle i, the owned particles j > i and
 // all the ghosts closer than a radius at the time of the build, found through the
-// engine's cells in its cell order. A pair of owned particles appears once (its force is
+// engine's cells (gathered once per cell). A pair of owned particles appears once (its force is
 // computed once and added to both, Newton's third law); a pair with a ghost appears in
 // the owned particle's list only (the ghost's own rank computes its side). The lists
 // carry no summation order: the kernel sums exactly (see kernel.hpp), so any order of the
@@ -34,7 +34,9 @@ class VerletList {
  private:
   struct Scratch {                    // one per thread
     std::vector<std::uint32_t> out;   // the lists of the thread's particles
-    std::vector<std::uint32_t> near;  // kept candidates of one particle
+    std::vector<std::uint32_t> near;  // candidates of one cell: owned by index, then ghosts
+    std::size_t owned = 0;            // owned candidates
+    std::vector<double> xyz;          // their x, y, z (one array each), then distances
     std::vector<std::size_t> count;   // list length and owned partners, per particle
   };
   std::vector<std::size_t> start_, ghost_;
