@@ -524,11 +524,15 @@ bool Simulation::advance() {
     shuffleNow = probe[1] > slack_ || saving || interrupted;
   if (shuffleNow) {
     Timers::Scope t(timers_, Phase::Shuffle);
+    // The particles change order (and ranks): the particle the growth check follows is
+    // found again by its ID, so that its verdict does not depend on how often a run
+    // shuffles (restart files force a shuffle).
+    const std::vector<double> checks = checkMoves ? checkState() : std::vector<double>{};
     cube_->shuffle(step_);
     integrator_->particlesMoved();
     model_->neighboursChanged(*ctx_);
-    // The particles changed order: the particle followed is lost.
     tracked_ = kNone;
+    restoreChecks(checks);
     stats_.shuffles++;
     stats_.maxShuffleMessages = std::max(stats_.maxShuffleMessages, cube_->stats().shuffleMessages);
   } else {
