@@ -128,6 +128,45 @@ TEST(LjPressure, DiluteGasIsIdeal) {
   EXPECT_EQ(global(*sim, "potential"), 0.0);  // really no pair within rc
 }
 
+// Two atoms brought within 0.3 sigma: their pair terms would leave the range of the exact
+// sums (closer than about 0.37 sigma), and the run stops with an error saying so; at
+// 0.5 sigma it goes on. On one rank each (the error is this rank's).
+TEST(LjOverlap, AtomsFarInsideTheWallStopTheRun) {
+  for (const double r : {0.5, 0.3}) {
+    Comm comm(MPI_COMM_SELF);
+    Melt m;
+    m.temperature = 0;
+    auto sim = makeMelt(m, comm);
+    Particles& P = sim->particles();
+    // Atom 0 and its nearest owned neighbour (the lattice spacing away).
+    std::size_t b = 1;
+    auto dist2 = [&](std::size_t j) {
+      double d2 = 0;
+      for (int a = 0; a < 3; ++a) d2 += std::pow(P.alter(j)[a] - P.alter(0)[a], 2);
+      return d2;
+    };
+    for (std::size_t j = 2; j < P.owned(); ++j)
+      if (dist2(j) < dist2(b)) b = j;
+    const double d = std::sqrt(dist2(b));
+    ASSERT_LT(d, 1.2);
+    for (int a = 0; a < 3; ++a)
+      P.alter(b)[a] = P.alter(0)[a] + (P.alter(b)[a] - P.alter(0)[a]) * (r / d);
+    sim->procCube().halo();
+    if (r > 0.4) {
+      EXPECT_GT(global(*sim, "potential"), 1e3);  // the wall, evaluated
+      continue;
+    }
+    try {
+      global(*sim, "potential");
+      ADD_FAILURE() << "atoms " << r << " apart did not stop the run";
+    } catch (const RunError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("closer than"), std::string::npos) << what;
+      EXPECT_NE(what.find("0.3 apart"), std::string::npos) << what;
+    }
+  }
+}
+
 class LjForce : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(LjForce, IsMinusTheGradientOfThePotentialEnergy) {
