@@ -72,7 +72,7 @@ struct DisplacementControl {
   bool active() const { return axis >= 0; }
 };
 
-// The solver: explicit dynamics (the default), or quasi-static loading by adaptive dynamic
+// The solver: explicit dynamics (the default), or quasi-static loading by dynamic
 // relaxation (engine/relaxation.cpp): the loads and prescribed values × load_scale applied
 // in increments of at most 1/`loadSteps` of it, each relaxed to static equilibrium, i.e.
 // until the out-of-balance force is below `tolerance` × the applied load (or × the
@@ -183,11 +183,10 @@ class Integrator {
   LoadPath& loadPath() { return path_; }
 
   // Quasi-static: relaxes the owned particles to static equilibrium under the loads and
-  // prescribed values × `factor` (the previous load step's factor `previous`), by adaptive
+  // prescribed values × `factor` (the previous load step's factor `previous`), by
   // dynamic relaxation (engine/relaxation.cpp). `forces` evaluates the model's forces at the
-  // current state; `exchange` refreshes the ghosts after the particles moved; `broken`
-  // counts the broken interactions of the current state (collective); `source` names the
-  // run's input in errors.
+  // current state; `exchange` refreshes the ghosts after the particles moved; `source` names
+  // the run's input in errors.
   struct Relaxed {
     bool converged = true;
     bool runaway = false;  // not converged: the motion ran away from the last equilibrium
@@ -199,7 +198,7 @@ class Integrator {
   };
   Relaxed relax(Context& ctx, const Solver& solver, const std::string& source, double factor,
                 double previous, const std::function<void()>& forces,
-                const std::function<void()>& exchange, const std::function<long()>& broken);
+                const std::function<void()>& exchange);
 
  private:
   void resolve(const Schema& schema);

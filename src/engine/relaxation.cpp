@@ -1,19 +1,23 @@
-// Quasi-static loading by adaptive dynamic relaxation (Underwood 1983; Kilic & Madenci 2010
-// for peridynamics), built on the integrator's degrees of freedom, bodies and constraints.
-// Fictitious dynamics with time step 1 and a diagonal fictitious mass per DOF,
-//     v(n+½) = ((2 − c) v(n−½) + 2 Λ⁻¹ F(n)) / (2 + c),   x(n+1) = x(n) + v(n+½),
-// started with v(½) = Λ⁻¹ F(0) / 2, damped critically for the lowest mode the iteration
-// sees: c = 2 √(uᵀ Λ K̃ u / uᵀ Λ u), K̃_ii = −(a_i(n) − a_i(n−1)) / v_i(n−½), a = Λ⁻¹ F.
+// Quasi-static loading by dynamic relaxation (Underwood 1983) with kinetic damping (Cundall;
+// Barnes), built on the integrator's degrees of freedom, bodies and constraints.
+// Fictitious undamped dynamics with time step 1 and a diagonal fictitious mass per DOF,
+//     v(n+½) = v(n−½) + Λ⁻¹ F(n),   x(n+1) = x(n) + v(n+½),
+// started from rest, v(½) = Λ⁻¹ F(0) / 2; when the kinetic energy ½ Σ Λ v² of the next step
+// would fall, it has passed a peak (the motion crossed the equilibrium of the mode that
+// dominates it) and the motion starts again from rest at x(n). No stiffness estimate is
+// needed, so softening (a negative local stiffness) does not leave the motion undamped.
 // Λ = M ω_max² s / 4 (M the model's masses and inertias, ω_max² the largest eigenvalue of
 // M⁻¹K by power iteration on finite differences of the model's forces, s a safety factor),
 // so the fictitious step is stable for every model that gives forces. A load step has
 // converged when |F|, the out-of-balance force of the free DOFs, is below the tolerance ×
 // the applied load |λP| (the reactions |R| when no load is applied), norms in M⁻¹.
-// Damage: every iteration evaluates the forces from the damage of the last converged state
-// (the bonds are put back before each evaluation), so a load step's damage is that of its
-// converged state only, never of an overshoot of the fictitious motion; the converged
-// evaluation's damage is kept, and its forces, computed with that damage, are the ones in
-// equilibrium. See docs/quasi-static.md.
+// Damage: while the out-of-balance force exceeds kSettled of the applied load, every
+// iteration evaluates the forces from the damage kept so far (the bonds are put back before
+// each evaluation), so the transient of a load step's first iterations leaves no damage;
+// below it the damage of each evaluation is kept, so that softening localizes once and for
+// all instead of the relaxation revisiting which interaction cracks. The converged
+// evaluation's forces, computed with the damage it left, are the ones in equilibrium. See
+// docs/quasi-static.md.
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -32,15 +36,16 @@ constexpr double kSafety = 1.5;
 constexpr int kPowerIterations = 100;
 // The finite-difference probe moves no DOF more than this fraction of the horizon (or rad).
 constexpr double kProbe = 1e-7;
+// Damage is kept from the evaluations whose out-of-balance force is below this share of the
+// applied load (or reactions).
+constexpr double kSettled = 1e-2;
 // Under force control a load step has no equilibrium near the last one when its displacement
 // along the loads exceeds kRunaway times the last equilibrium's (looked at every
-// kRunawayEvery iterations), or when it stalls: looked at after kFirstLook iterations and
-// each doubling of them, the residual did not halve while the structure kept moving and
-// broke more interactions (a crack running). Without new damage the iterate's lattice is
-// the committed one, elastic: its relaxation converges, however slowly, or runs away.
+// kRunawayEvery iterations): past the peak the undamped motion between kinetic-energy peaks
+// carries the structure away; or when the equilibrium it reaches lies on another branch
+// (the step's displacement per load over kRunaway times the last equilibrium's).
 constexpr double kRunaway = 10;
 constexpr long kRunawayEvery = 10;
-constexpr long kFirstLook = 500;
 }  // namespace
 
 double Integrator::dofForce(const Particles& P, std::size_t i, int d, double factor) const {
@@ -101,8 +106,7 @@ double Integrator::highestFrequencySquared(Context& ctx, const std::function<voi
 Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const std::string& source,
                                       double factor, double previous,
                                       const std::function<void()>& forces,
-                                      const std::function<void()>& exchange,
-                                      const std::function<long()>& broken) {
+                                      const std::function<void()>& exchange) {
   Particles& P = ctx.particles;
   ensureBodies(ctx);
   const std::size_t n = P.owned();
@@ -157,7 +161,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     return loadTotal > 0 ? work / loadTotal : 0.0;
   };
   // Under force control, the last equilibrium's displacement along the loads: a load step
-  // whose fictitious motion runs away from it, or stalls while still moving, has no
+  // whose fictitious motion runs away from it has no
   // equilibrium near it (the structure is past its peak) and is stopped then instead of
   // after max_iterations.
   const double lastAlong = control.active() ? 0.0 : alongLoads();
@@ -180,8 +184,8 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   }
   exchange();
 
-  // Per owned DOF: fictitious mass, velocity, and last accelerations.
-  std::vector<double> lambda(n * nd), v(n * nd, 0.0), acc(n * nd), last(n * nd);
+  // Per owned DOF: fictitious mass, velocity and acceleration.
+  std::vector<double> lambda(n * nd), v(n * nd, 0.0), acc(n * nd);
   std::vector<unsigned char> free(n * nd);
   for (std::size_t i = 0; i < n; ++i)
     for (int d = 0; d < nd; ++d) {
@@ -196,15 +200,18 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     return bodies_[i].constraint[d] == Constraint::Resting &&
            P.alter(i)[pos_[d]] <= P.fixed(i)[pos_[d]];
   };
-  Bonds::Saved committed;
-  ctx.bonds.save(committed);
+  Bonds::Saved kept;
+  ctx.bonds.save(kept);
   Relaxed out;
-  long lookAt = kFirstLook;  // the next look for a stalled relaxation, and the last one's
-  double lookResidual = 0, lookAlong = 0;
-  long lookBroken = 0;
   const long nOwned = static_cast<long>(n);
+  double kinetic = 0;  // twice the kinetic energy of the last step
   for (long it = 0;; ++it) {
-    if (it > 0) ctx.bonds.restore(committed);
+    if (it > 0) {  // the last evaluation's damage is kept once the motion has settled
+      if (out.residual < kSettled * out.reference)
+        ctx.bonds.save(kept);
+      else
+        ctx.bonds.restore(kept);
+    }
     forces();
     // Out-of-balance forces of the free DOFs; reactions of the held ones (and of a resting
     // DOF its support pushes).
@@ -237,49 +244,50 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     out.residual = std::sqrt(rr);
     out.reference = pp > 0 ? std::sqrt(pp) : std::sqrt(reaction);
     out.iterations = it;
-    if (out.residual <= solver.tolerance * out.reference) break;
+    if (out.residual <= solver.tolerance * out.reference) {
+      // Snapped through: the equilibrium found is over kRunaway times as compliant, for this
+      // load step's increment, as the last one was on average (u / λ): the structure passed
+      // a limit point of its curve (a crack ran through) and came to rest on another branch.
+      if (!control.active() && lastAlong != 0 && factor > previous && previous > 0 &&
+          std::fabs(alongLoads() - lastAlong) / (factor - previous) >
+              kRunaway * std::fabs(lastAlong) / previous) {
+        out.converged = false;
+        out.runaway = true;
+      }
+      break;
+    }
     if (it >= solver.maxIterations) {
       out.converged = false;
       break;
     }
-    if (!control.active() && it > 0 && it % kRunawayEvery == 0) {
-      const double along = alongLoads();
-      // Stalled: since the last look the residual has not halved while the structure kept
-      // moving along the loads (by over a tenth of its move before that look) and broke
-      // more interactions; not in a load step from the unloaded state, whose slowest modes
-      // may take long to start.
-      bool stalled = false;
-      if (it == lookAt) {
-        const long now = broken();
-        stalled = lookAt > kFirstLook && lastAlong != 0 && out.residual > 0.5 * lookResidual &&
-                  std::fabs(along - lookAlong) > 0.1 * std::fabs(lookAlong - lastAlong) &&
-                  now > lookBroken;
-        lookAt *= 2, lookResidual = out.residual, lookAlong = along, lookBroken = now;
-      }
-      if (stalled || (lastAlong != 0 && std::fabs(along) > kRunaway * std::fabs(lastAlong))) {
-        out.converged = false;
-        out.runaway = true;
-        break;
-      }
+    // Ran away: the structure moved along the loads over kRunaway times as far as at the
+    // last equilibrium.
+    if (!control.active() && lastAlong != 0 && it % kRunawayEvery == 0 &&
+        std::fabs(alongLoads()) > kRunaway * std::fabs(lastAlong)) {
+      out.converged = false;
+      out.runaway = true;
+      break;
     }
-    // Damping from the Rayleigh quotient of the local stiffness along the displacement.
-    double c = 0;
-    if (it > 0) {
-      ExactSum num, den;
+    // Kinetic damping: twice the kinetic energy of the undamped step and of a step from rest;
+    // when the former would fall, the motion has passed a peak and starts again from rest.
+    bool rest;
+    {
+      ExactSum moving, still;
       for (std::size_t i = 0; i < n; ++i) {
-        double a = 0, b = 0;
+        double e = 0, e0 = 0;
         for (int d = 0; d < nd; ++d) {
           const std::size_t k = nd * i + d;
           if (!free[k]) continue;
-          const double u = displacement(P, i, d), m = 1 / weight(i, d);
-          if (v[k] != 0) a += m * u * u * (-(acc[k] - last[k]) / v[k]);
-          b += m * u * u;
+          const double w = v[k] + acc[k];
+          e += lambda[k] * w * w;
+          e0 += lambda[k] * acc[k] * acc[k] / 4;
         }
-        num.add(a);
-        den.add(b);
+        moving.add(e);
+        still.add(e0);
       }
-      const double q = ctx.sum(num), u2 = ctx.sum(den);
-      if (q > 0 && u2 > 0) c = 2 * std::sqrt(q / u2);
+      const double now = ctx.sum(moving), fromRest = ctx.sum(still);
+      rest = it == 0 || now < kinetic;
+      kinetic = rest ? fromRest : now;
     }
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < nOwned; ++i) {
@@ -289,8 +297,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       for (int d = 0; d < nd; ++d) {
         const std::size_t k = nd * i + d;
         if (!free[k]) continue;
-        v[k] = it == 0 ? acc[k] / 2 : ((2 - c) * v[k] + 2 * acc[k]) / (2 + c);
-        last[k] = acc[k];
+        v[k] = rest ? acc[k] / 2 : v[k] + acc[k];
         if (d >= nLinear) {
           phi[d - nT_] = v[k];
           continue;

@@ -362,8 +362,7 @@ bool Simulation::relaxLoadStep() {
     const double increment = std::min(path.increment, full - path.progress);
     factor = staticFactor(path.progress + increment);
     ctx_->setStaticFactor(factor);
-    r = integrator_->relax(*ctx_, solver, cfg_.source, factor, previous, forces, exchange,
-                           [&] { return brokenInteractions(); });
+    r = integrator_->relax(*ctx_, solver, cfg_.source, factor, previous, forces, exchange);
     broken = brokenInteractions();
     const bool tooMany = solver.maxBroken > 0 && broken - brokenBefore > solver.maxBroken;
     if (r.converged && !tooMany) {
@@ -380,8 +379,9 @@ bool Simulation::relaxLoadStep() {
            << solver.maxBroken;
     else if (r.runaway)
       what << "has no equilibrium near the last: after " << r.iterations
-           << " iterations the structure was still moving along the loads, ever "
-              "further from the last equilibrium or with a residual no longer falling";
+           << " iterations the structure had moved along the loads over ten times as "
+              "far as at the last equilibrium, or snapped through to an equilibrium over ten "
+              "times as compliant";
     else
       what << "did not converge in " << solver.maxIterations
            << " iterations: the out-of-balance force is still " << relative
