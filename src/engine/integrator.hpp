@@ -189,7 +189,7 @@ class Integrator {
   // the run's input in errors.
   struct Relaxed {
     bool converged = true;
-    bool runaway = false;  // not converged: the motion ran away from the last equilibrium
+    bool runaway = false;  // not converged: ran away from the last equilibrium or snapped
     long iterations = 0;
     double residual = 0, reference = 0;  // out-of-balance and applied (or reaction) norms
     // The curve: |factor × loads| and the work-conjugate displacement; under displacement
