@@ -432,8 +432,12 @@ stirrup_cover = 0.02
        "m3.toml:5: mplm3d needs a 3D problem"},
       {"2D generator for the 3D model", particles, "generator = \"mplm_beam\"\n",
        "m3.toml:5: this generator makes MPLM particles; use it with model mplm2d"},
-      {"3D particle set for the 2D model", "\"mplm3d\"", "\"mplm2d\"",
+      {"3D generator for the 2D model", "\"mplm3d\"", "\"mplm2d\"",
        "m3.toml:5: mplm3d_beam makes 3D MPLM particles; use it with model mplm3d"},
+      {"3D particle set for the 2D model", head + particles,
+       "steps = 5\n[model]\nname = \"mplm2d\"\n[particles]\ngenerator = \"cubic\"\nnx = 3\n"
+       "ny = 3\nnz = 3\nspacing = 0.02\n",
+       "m3.toml:5: mplm2d needs a 2D problem"},
   };
   {
     // The member as written runs.

@@ -280,6 +280,21 @@ TEST(Mplm3dScenarios, LatticeThatDoesNotFitTheBoxIsRefused) {
   EXPECT_NE(e.find("does not fit the box"), std::string::npos) << e;
 }
 
+// A fracture energy so small that the interactions would break at their elastic limit
+// (α_t ≤ 1) stops at its line, as does one of zero.
+TEST(Mplm3dScenarios, FractureEnergyBelowTheElasticLimitIsRefused) {
+  auto member = [](const std::string& gf) {
+    return "steps = 1\n[model]\nname = \"mplm3d\"\nfracture_energy = " + gf +
+           "\n[particles]\ngenerator = \"mplm3d_beam\"\nlength = 0.2\ndepth = 0.1\n"
+           "width = 0.1\n";
+  };
+  std::string e = errorOf("mplm3d_bad/gf.toml", member("5"));
+  EXPECT_NE(e.find("gf.toml:4: fracture_energy gives a tensile_ratio <= 1"), std::string::npos)
+      << e;
+  e = errorOf("mplm3d_bad/gf0.toml", member("0"));
+  EXPECT_NE(e.find("gf0.toml:4: fracture_energy must be > 0"), std::string::npos) << e;
+}
+
 TEST(Mplm3dScenarios, TwoDimensionalParticlesAndGeneratorsAreRefused) {
   // The 2D beam generator for the 3D model, and the 3D one for the 2D model.
   std::string e =

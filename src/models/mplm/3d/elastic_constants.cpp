@@ -19,4 +19,8 @@ ElasticConstants isotropicFcc(double E, double nu, double s) {
   return c;
 }
 
+double alphaFromFractureEnergy(const ElasticConstants& k, double s, double GF, double epsT) {
+  return GF * s / (epsT * epsT * (1.5 * std::sqrt(2.0) * k.a + 2 * k.a2));
+}
+
 }  // namespace pdq::mplm3d

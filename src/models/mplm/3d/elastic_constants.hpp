@@ -19,4 +19,14 @@ struct ElasticConstants {
 // Throws std::domain_error unless 0 ≤ ν < 1/4.
 ElasticConstants isotropicFcc(double E, double nu, double s);
 
+// The fracture energy G_F a crack normal to a bond direction dissipates when every
+// interaction crossing it breaks, and the α_t that gives it. The lattice has √2/s³
+// particles per unit volume; of its bond directions, the 6 nearest (length s) have
+// Σ|d·n| = 3s and the 3 second nearest (√2 s) Σ|d·n| = 2s, so per unit area 3√2/s² nearest
+// and 2√2/s² second-nearest interactions cross the plane. Under linear softening each
+// dissipates ½ (a/L) L² ε_t² α_t = ½ a L ε_t² α_t (a₂ for the second nearest), so
+//   G_F = (ε_t² α_t / s)(3a/√2 + 2a₂) = E s ε_t² α_t (3/4 + ν) / ((1+ν)(1−2ν)),
+// proportional to s at a fixed α_t; hence α_t = G_F s / (ε_t² (3√2/2 a + 2 a₂)).
+double alphaFromFractureEnergy(const ElasticConstants& k, double s, double GF, double epsT);
+
 }  // namespace pdq::mplm3d
