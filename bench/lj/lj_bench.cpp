@@ -62,7 +62,9 @@ int main(int argc, char** argv) {
   const double t0 = MPI_Wtime(), c0 = cpuSeconds();
   while (sim.advance()) {
   }
-  const double cpu = comm.max(cpuSeconds() - c0);
+  const double mine = cpuSeconds() - c0;
+  const double cpu = comm.max(mine);
+  const double cpuSum = comm.sum(static_cast<long>(1e6 * mine)) * 1e-6;
   comm.barrier();
   const double seconds = MPI_Wtime() - t0;
   const double e1 = sim.model().globalValues(sim.context())[2];
@@ -70,12 +72,18 @@ int main(int argc, char** argv) {
   if (comm.root())
     std::printf(
         "code=pdq atoms=%.0f ranks=%d threads=%d steps=%ld seconds=%.4f "
-        "particle_steps_per_s=%.4e cpu_seconds=%.4f force=%.3f shuffle=%.3f comm=%.3f "
+        "particle_steps_per_s=%.4e cpu_seconds=%.4f cpu_sum=%.4f force=%.3f shuffle=%.3f comm=%.3f "
         "integrate=%.3f "
         "shuffles=%llu drift=%.2e\n",
         atoms, comm.size(), omp_get_max_threads(), steps, seconds, atoms * steps / seconds, cpu,
-        t[pdq::Phase::Force], t[pdq::Phase::Shuffle], t[pdq::Phase::Communication],
+        cpuSum, t[pdq::Phase::Force], t[pdq::Phase::Shuffle], t[pdq::Phase::Communication],
         t[pdq::Phase::Integrate], static_cast<unsigned long long>(sim.stats().shuffles),
         (e1 - e0) / std::abs(e0));
+  // One line per rank: the CPU seconds of its steps by phase.
+  const std::string line = "  rank=" + std::to_string(comm.rank()) +
+                           " owned=" + std::to_string(sim.particles().owned()) +
+                           " cpu=" + std::to_string(mine) + " " + pdq::cpuBreakdown(t, mine) + "\n";
+  for (const auto& b : comm.gather(std::vector<char>(line.begin(), line.end())))
+    if (comm.root()) std::fwrite(b.data(), 1, b.size(), stdout);
   return 0;
 }

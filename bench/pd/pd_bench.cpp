@@ -68,7 +68,7 @@ double cpuSeconds() {
 // The time of the steps, setup excluded: wall clock and the busiest rank's CPU time (on a
 // shared machine the CPU time is the work done; the wall clock also counts waiting for a core).
 struct RunTime {
-  double wall, cpu;
+  double wall, cpu, cpuSum, cpuMine;  // cpu: the busiest rank's; cpuSum: every rank's
 };
 
 RunTime timedRun(Simulation& sim, Comm& comm) {
@@ -77,10 +77,25 @@ RunTime timedRun(Simulation& sim, Comm& comm) {
   const double t0 = MPI_Wtime(), c0 = cpuSeconds();
   while (sim.advance()) {
   }
-  const double cpu = comm.max(cpuSeconds() - c0);
+  const double mine = cpuSeconds() - c0;
+  const double cpu = comm.max(mine);
+  ExactSum acc;
+  acc.add(mine);
+  const double sum = comm.sum(acc);
   const double t = comm.max(MPI_Wtime() - t0);
   sim.finish();
-  return {t, cpu};
+  return {t, cpu, sum, mine};
+}
+
+// One line per rank: its owned particles and the CPU seconds of its steps by phase.
+void printRankCpu(Simulation& sim, const RunTime& rt, Comm& comm) {
+  char head[96];
+  std::snprintf(head, sizeof head, "  rank=%d owned=%zu ghosts=%zu cpu=%.3f ", comm.rank(),
+                sim.particles().owned(), sim.particles().ghosts(), rt.cpuMine);
+  const std::string line = head + cpuBreakdown(sim.timers(), rt.cpuMine) + "\n";
+  auto blocks = comm.gather(std::vector<char>(line.begin(), line.end()));
+  if (comm.root())
+    for (auto& b : blocks) std::fwrite(b.data(), 1, b.size(), stdout);
 }
 
 double median(std::vector<double> v) {
@@ -161,10 +176,11 @@ int block(int argc, char** argv, Comm& comm) {
     std::printf(
         "pdq %s N=%zu bonds=%ld ranks=%d threads=%d steps=%ld time=%.4f s  "
         "particle-steps/s=%.4g  bond-steps/s=%.4g  cpu=%.4f s  cpu-particle-steps/s=%.4g  "
-        "force=%.3f s  halo=%.3f s  peak_MiB(rank0)=%.1f\n",
+        "cpu_sum=%.4f s  force=%.3f s  halo=%.3f s  peak_MiB(rank0)=%.1f\n",
         model.c_str(), nParticles, bonds, comm.size(), omp_get_max_threads(), steps, t,
         nParticles * steps / t, bonds * double(steps) / t, rt.cpu, nParticles * steps / rt.cpu,
-        force, halo, peakMemoryMiB());
+        rt.cpuSum, force, halo, peakMemoryMiB());
+  printRankCpu(sim, rt, comm);
   if (!dir.empty()) {
     Particles& P = sim.particles();
     std::ostringstream os;

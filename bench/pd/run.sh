@@ -15,7 +15,9 @@ BUILD=$(cd "${1:?usage: run.sh BUILD_DIR [quick]}" && pwd)
 QUICK=${2:-}
 BENCH="$BUILD/bench/pd/pd_bench"
 LMP=${LMP:-/usr/bin/lmp}
-MPIRUN=(mpirun --oversubscribe --allow-run-as-root)
+# A rank waiting for a message gives its core away (the machine is shared), so a rank's CPU
+# time is its own work.
+MPIRUN=(mpirun --oversubscribe --allow-run-as-root --mca mpi_yield_when_idle 1)
 WORK=$(mktemp -d /tmp/pd_bench.XXXXXX)
 trap 'rm -rf "$WORK"' EXIT
 N=47; M=721; D=309; BIGM=1617; BIGN=693
@@ -40,7 +42,9 @@ for model in pmb lps; do
     pdq_ps=$(sed -n 's/.* particle-steps\/s=\([^ ]*\).*/\1/p' <<<"$out")
     pdq_cpu=$(sed -n 's/.*cpu-particle-steps\/s=\([^ ]*\).*/\1/p' <<<"$out")
     pdq_bs=$(sed -n 's/.*bond-steps\/s=\([^ ]*\).*/\1/p' <<<"$out")
-    lmp_ps=n/a; lmp_cpu=n/a; ratio=n/a; rel=n/a
+    pdq_sum=$(sed -n 's/.*cpu_sum=\([^ ]*\).*/\1/p' <<<"$out")
+    grep '^  rank=' <<<"$out" >>"$WORK/ranks.txt"
+    lmp_ps=n/a; lmp_cpu=n/a; lmp_sum=n/a; ratio=n/a; rel=n/a
     if [[ -x $LMP ]]; then
       (cd "$dir" && env -i PATH=/usr/bin:/bin HOME=/tmp OMP_NUM_THREADS=1 \
          "${MPIRUN[@]}" -np "$np" "$LMP" -in lammps.in -log lammps.log >lmp.out 2>&1)
@@ -50,22 +54,29 @@ for model in pmb lps; do
       cpu_use=$(sed -n 's/^\([0-9.]*\)% CPU use.*/\1/p' "$dir/lammps.log" | tail -1)
       lmp_ps=$(awk -v n="$natoms" -v t="$loop" 'BEGIN{printf "%.4g", n*200/t}')
       lmp_cpu=$(awk -v r="$lmp_ps" -v c="${cpu_use:-100}" 'BEGIN{printf "%.4g", r*100/c}')
+      lmp_sum=$(awk -v t="$loop" -v c="${cpu_use:-100}" -v p="$np" 'BEGIN{printf "%.4f", t*c/100*p}')
       ratio=$(awk -v a="$pdq_ps" -v b="$lmp_ps" 'BEGIN{printf "%.2f", a/b}')
       rel=$("$BENCH" compare "$dir/pdq.disp" "$dir/lammps.dump" | sed -n 's/.*relative=//p')
     fi
-    rate[$model.$np]="$pdq_ps $pdq_cpu $lmp_ps $lmp_cpu"
+    rate[$model.$np]="$pdq_ps $pdq_cpu $lmp_ps $lmp_cpu $pdq_sum $lmp_sum"
     printf '%-5s %-5s %12s %12s %12s %12s %12s %7s %10s\n' "$model" "$np" "$pdq_ps" "$pdq_cpu" \
       "$lmp_ps" "$lmp_cpu" "$pdq_bs" "$ratio" "$rel"
   done
 done
-echo "1 -> 2 ranks speed-up (wall clock; CPU time of the busiest rank):"
+echo "1 -> 2 ranks speed-up (wall clock; CPU time of the busiest rank) and efficiency (CPU time of"
+echo " the time loop on 1 rank over the sum of both ranks' on 2: 100 % = the second rank added no work):"
 for model in pmb lps; do
-  read -r a1 c1 l1 lc1 <<<"${rate[$model.1]}"
-  read -r a2 c2 l2 lc2 <<<"${rate[$model.2]}"
+  read -r a1 c1 l1 lc1 s1 ls1 <<<"${rate[$model.1]}"
+  read -r a2 c2 l2 lc2 s2 ls2 <<<"${rate[$model.2]}"
   awk -v m="$model" -v a1="$a1" -v a2="$a2" -v c1="$c1" -v c2="$c2" -v l1="$l1" -v l2="$l2" \
-    -v lc1="$lc1" -v lc2="$lc2" 'function r(x, y) { return (x + 0 > 0 && y + 0 > 0) ? sprintf("%.2fx", y / x) : "n/a" }
-    BEGIN { printf "  %-4s pdq %s (cpu %s)   LAMMPS %s (cpu %s)\n", m, r(a1, a2), r(c1, c2), r(l1, l2), r(lc1, lc2) }'
+    -v lc1="$lc1" -v lc2="$lc2" -v s1="$s1" -v s2="$s2" -v ls1="$ls1" -v ls2="$ls2" \
+    'function r(x, y) { return (x + 0 > 0 && y + 0 > 0) ? sprintf("%.2fx", y / x) : "n/a" }
+     function e(x, y) { return (x + 0 > 0 && y + 0 > 0) ? sprintf("%.0f %%", 100 * x / y) : "n/a" }
+    BEGIN { printf "  %-4s pdq %s (cpu %s), efficiency %s (goal >= 90 %%)   LAMMPS %s (cpu %s), efficiency %s\n",
+            m, r(a1, a2), r(c1, c2), e(s1, s2), r(l1, l2), r(lc1, lc2), e(ls1, ls2) }'
 done
+echo "pdq's CPU seconds of the time loop per rank and phase (pmb 1, 2 ranks, then lps):"
+cat "$WORK/ranks.txt"
 echo "load average $(cut -d' ' -f1-3 /proc/loadavg)"
 
 echo

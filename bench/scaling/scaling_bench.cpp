@@ -301,6 +301,17 @@ int geometry(int argc, char** argv, Comm& comm) {
   std::printf("geometry model=%s particles=%.0f cells=%dx%dx%d dim=%d halo_record=%llu\n",
               s.model.c_str(), target > 0 ? target : particles, fine.n[0], fine.n[1], fine.n[2],
               dec.dim(), static_cast<unsigned long long>(sim->procCube().haloRecordBytes()));
+  // The engine cuts the cores at equal particle counts: the layers' counts along each axis.
+  std::array<std::vector<double>, 3> layers;
+  for (int a = 0; a < 3; ++a) layers[a].assign(fine.n[a], 0.0);
+  for (int z = 0; z < fine.n[2]; ++z)
+    for (int y = 0; y < fine.n[1]; ++y)
+      for (int x = 0; x < fine.n[0]; ++x) {
+        const double v = fine.count[(static_cast<std::size_t>(z) * fine.n[1] + y) * fine.n[0] + x];
+        layers[0][x] += v;
+        layers[1][y] += v;
+        layers[2][z] += v;
+      }
   for (int k = 4; k < argc; ++k) {
     const int ranks = std::stoi(argv[k]);
     RankLoad busiest;
@@ -308,7 +319,8 @@ int geometry(int argc, char** argv, Comm& comm) {
     int messagesMax = 0;
     std::array<int, 3> grid{};
     for (int r = 0; r < ranks; ++r) {
-      const Decomposition d(dom, minCell, sim->config().procs, ranks, r);
+      Decomposition d(dom, minCell, sim->config().procs, ranks, r);
+      d.balance(layers);
       grid = {d.procs(0), d.procs(1), d.procs(2)};
       const RankLoad l = loadOf(d, fine, r);
       ownedMax = std::max(ownedMax, l.owned);

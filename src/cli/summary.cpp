@@ -48,6 +48,8 @@ std::string summary(Simulation& sim, const std::string& modelName, const std::st
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);
   const double peak = comm.max(static_cast<double>(ru.ru_maxrss) * 1024);  // kB on Linux
+  std::array<int, 3> core{};  // the most cells a rank's core has along each axis
+  for (int a = 0; a < 3; ++a) core[a] = static_cast<int>(comm.max(double(dec.coreCells(a))));
   if (!comm.root()) return "";
 
   const double dt = sim.context().dt();
@@ -72,11 +74,10 @@ std::string summary(Simulation& sim, const std::string& modelName, const std::st
     box += fmt::format("{}{}: [{:.6g}, {:.6g}]{}", a ? "  " : "", "XYZ"[a], dom.lo[a], dom.hi[a],
                        dom.periodic[a] ? " periodic" : "");
   o += fmt::format("domain        {}\n", box);
-  std::array<int, 3> cells{}, procs{}, core{};
+  std::array<int, 3> cells{}, procs{};
   for (int a = 0; a < 3; ++a) {
     cells[a] = dec.globalCells(a);
     procs[a] = dec.procs(a);
-    core[a] = (cells[a] + procs[a] - 1) / procs[a];
   }
   std::string size;
   for (int a = 0; a < dim; ++a) size += fmt::format("{}{:.6g}", a ? " x " : "", dec.cellSize(a));
@@ -100,7 +101,7 @@ std::string summary(Simulation& sim, const std::string& modelName, const std::st
       c[a] = (d.globalCells(a) + p[a] - 1) / p[a];
     }
     o += fmt::format(
-        "on {} ranks    processors {}, up to {} cells per rank, about {:.0f} "
+        "on {} ranks    processors {}, about {} cells per rank, about {:.0f} "
         "particles per rank\n",
         ranks, axes(p, dim), axes(c, dim), owned / ranks);
   }

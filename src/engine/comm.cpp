@@ -3,6 +3,8 @@
 #include <mpi.h>
 
 #include <algorithm>
+#include <chrono>
+#include <thread>
 #include <type_traits>
 
 namespace pdq {
@@ -12,6 +14,42 @@ static_assert(std::is_pointer_v<MPI_Comm>, "pdq::Comm stores MPI_Comm as a point
 
 namespace {
 MPI_Comm mpi(void* comm) { return static_cast<MPI_Comm>(comm); }
+
+// Calls `ready` until it returns true without holding a core while the other ranks are
+// late: polls for a short while (a message due soon arrives at once), then sleeps between
+// polls, each sleep a quarter of the time waited so far (a wake-up costs CPU time too, and
+// the wait overshoots by at most a quarter). Waiting by polling alone (MPI's own waits)
+// would burn the CPU time a late rank needs when ranks share cores, and count the wait as
+// work.
+template <class Ready>
+void poll(Ready&& ready) {
+  using Clock = std::chrono::steady_clock;
+  using us = std::chrono::microseconds;
+  constexpr us kSpin(20), kShortestNap(20), kLongestNap(5000);
+  if (ready()) return;
+  const auto start = Clock::now();
+  while (Clock::now() - start < kSpin)
+    if (ready()) return;
+  while (!ready()) {
+    const auto waited = std::chrono::duration_cast<us>(Clock::now() - start);
+    std::this_thread::sleep_for(std::clamp(waited / 4, kShortestNap, kLongestNap));
+  }
+}
+
+void await(int n, MPI_Request* reqs) {
+  poll([&] {
+    int done = 0;
+    MPI_Testall(n, reqs, &done, MPI_STATUSES_IGNORE);
+    return done != 0;
+  });
+}
+
+// MPI_Allreduce, waited for as above.
+void allreduce(const void* in, void* out, int n, MPI_Datatype type, MPI_Op op, MPI_Comm comm) {
+  MPI_Request req;
+  MPI_Iallreduce(in, out, n, type, op, comm, &req);
+  await(1, &req);
+}
 }  // namespace
 
 Comm::Comm() : Comm(MPI_COMM_WORLD) {}
@@ -50,9 +88,9 @@ Comm Comm::split(int colour) const {
 
 void Comm::sendrecv(const std::vector<char>& out, int dest, std::vector<char>& in, int src,
                     int tag) {
-  MPI_Request req = MPI_REQUEST_NULL;
+  MPI_Request req[2] = {MPI_REQUEST_NULL, MPI_REQUEST_NULL};
   if (dest >= 0) {
-    MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_BYTE, dest, tag, mpi(comm_), &req);
+    MPI_Isend(out.data(), static_cast<int>(out.size()), MPI_BYTE, dest, tag, mpi(comm_), &req[0]);
     if (dest != rank_) {
       ++messages_;
       bytes_ += out.size();
@@ -60,14 +98,20 @@ void Comm::sendrecv(const std::vector<char>& out, int dest, std::vector<char>& i
   }
   in.clear();
   if (src >= 0) {
+    // The size is learnt from the message's envelope before it is received.
     MPI_Status st;
-    MPI_Probe(src, tag, mpi(comm_), &st);
+    MPI_Message msg;
+    poll([&] {
+      int found = 0;
+      MPI_Improbe(src, tag, mpi(comm_), &found, &msg, &st);
+      return found != 0;
+    });
     int n = 0;
     MPI_Get_count(&st, MPI_BYTE, &n);
     in.resize(n);
-    MPI_Recv(in.data(), n, MPI_BYTE, src, tag, mpi(comm_), MPI_STATUS_IGNORE);
+    MPI_Imrecv(in.data(), n, MPI_BYTE, &msg, &req[1]);
   }
-  MPI_Wait(&req, MPI_STATUS_IGNORE);
+  await(2, req);
 }
 
 void Comm::sendrecvKnown(const double* out, std::size_t nOut, int dest, double* in, std::size_t nIn,
@@ -76,46 +120,47 @@ void Comm::sendrecvKnown(const double* out, std::size_t nOut, int dest, double* 
     ++messages_;
     bytes_ += nOut * sizeof(double);
   }
-  MPI_Sendrecv(out, static_cast<int>(nOut), MPI_DOUBLE, dest >= 0 ? dest : MPI_PROC_NULL, tag, in,
-               static_cast<int>(nIn), MPI_DOUBLE, src >= 0 ? src : MPI_PROC_NULL, tag, mpi(comm_),
-               MPI_STATUS_IGNORE);
+  MPI_Request req[2];
+  MPI_Irecv(in, static_cast<int>(nIn), MPI_DOUBLE, src >= 0 ? src : MPI_PROC_NULL, tag, mpi(comm_),
+            &req[0]);
+  MPI_Isend(out, static_cast<int>(nOut), MPI_DOUBLE, dest >= 0 ? dest : MPI_PROC_NULL, tag,
+            mpi(comm_), &req[1]);
+  await(2, req);
 }
 
 double Comm::max(double v) const {
   double r;
-  MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MAX, mpi(comm_));
+  allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MAX, mpi(comm_));
   return r;
 }
 
 std::vector<double> Comm::max(std::vector<double> v) const {
-  MPI_Allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_MAX,
-                mpi(comm_));
+  allreduce(MPI_IN_PLACE, v.data(), static_cast<int>(v.size()), MPI_DOUBLE, MPI_MAX, mpi(comm_));
   return v;
 }
 
 double Comm::min(double v) const {
   double r;
-  MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MIN, mpi(comm_));
+  allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MIN, mpi(comm_));
   return r;
 }
 
 long Comm::sum(long v) const {
   long r;
-  MPI_Allreduce(&v, &r, 1, MPI_LONG, MPI_SUM, mpi(comm_));
+  allreduce(&v, &r, 1, MPI_LONG, MPI_SUM, mpi(comm_));
   return r;
 }
 
 bool Comm::any(bool v) const {
   int x = v ? 1 : 0, r = 0;
-  MPI_Allreduce(&x, &r, 1, MPI_INT, MPI_MAX, mpi(comm_));
+  allreduce(&x, &r, 1, MPI_INT, MPI_MAX, mpi(comm_));
   return r != 0;
 }
 
 void Comm::exactSum(ExactSum& acc) const {
   acc.normalize();
-  MPI_Allreduce(MPI_IN_PLACE, acc.limbs().data(), ExactSum::kLimbs, MPI_INT64_T, MPI_SUM,
-                mpi(comm_));
-  MPI_Allreduce(MPI_IN_PLACE, acc.specials().data(), 3, MPI_INT64_T, MPI_SUM, mpi(comm_));
+  allreduce(MPI_IN_PLACE, acc.limbs().data(), ExactSum::kLimbs, MPI_INT64_T, MPI_SUM, mpi(comm_));
+  allreduce(MPI_IN_PLACE, acc.specials().data(), 3, MPI_INT64_T, MPI_SUM, mpi(comm_));
   acc.normalize();
 }
 

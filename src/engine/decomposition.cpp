@@ -90,8 +90,32 @@ Decomposition::Decomposition(const Domain& domain, double minCellSize, std::arra
   }
   me_ = {rank % nP_[0], (rank / nP_[0]) % nP_[1], rank / (nP_[0] * nP_[1])};
   for (int a = 0; a < 3; ++a) {
-    lo_[a] = firstCell(me_[a], nGC_[a], nP_[a]);
-    hi_[a] = firstCell(me_[a] + 1, nGC_[a], nP_[a]);
+    cuts_[a].resize(nP_[a] + 1);
+    for (int c = 0; c <= nP_[a]; ++c) cuts_[a][c] = firstCell(c, nGC_[a], nP_[a]);
+    lo_[a] = cuts_[a][me_[a]];
+    hi_[a] = cuts_[a][me_[a] + 1];
+  }
+}
+
+void Decomposition::balance(const std::array<std::vector<double>, 3>& weights) {
+  for (int a = 0; a < dim(); ++a) {
+    const int n = nGC_[a], p = nP_[a];
+    if (p == 1 || static_cast<int>(weights[a].size()) != n) continue;
+    std::vector<double> prefix(n + 1, 0);
+    for (int g = 0; g < n; ++g) prefix[g + 1] = prefix[g] + weights[a][g];
+    const double total = prefix[n];
+    if (!(total > 0)) continue;
+    // Cut c at the cell boundary whose prefix is nearest c/p of the total, leaving at least
+    // one cell to each core before and after it (of equal distances, the lower boundary).
+    for (int c = 1; c < p; ++c) {
+      const double target = total * c / p;
+      int best = cuts_[a][c - 1] + 1;
+      for (int b = best + 1; b <= n - (p - c); ++b)
+        if (std::fabs(prefix[b] - target) < std::fabs(prefix[best] - target)) best = b;
+      cuts_[a][c] = best;
+    }
+    lo_[a] = cuts_[a][me_[a]];
+    hi_[a] = cuts_[a][me_[a] + 1];
   }
 }
 
@@ -132,11 +156,9 @@ int Decomposition::globalCell(int a, double x) const {
 }
 
 int Decomposition::ownerCoord(int a, int g) const {
-  // Inverse of firstCell: the largest c with firstCell(c) <= g.
-  int c = static_cast<int>((static_cast<long>(g) * nP_[a]) / nGC_[a]);
-  while (c + 1 < nP_[a] && firstCell(c + 1, nGC_[a], nP_[a]) <= g) ++c;
-  while (c > 0 && firstCell(c, nGC_[a], nP_[a]) > g) --c;
-  return c;
+  // The last core whose first cell is at or before g.
+  const std::vector<int>& cut = cuts_[a];
+  return static_cast<int>(std::upper_bound(cut.begin() + 1, cut.end() - 1, g) - cut.begin()) - 1;
 }
 
 }  // namespace pdq

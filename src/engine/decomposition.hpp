@@ -6,6 +6,7 @@
 // Y) and exchanges nothing along the inactive axes.
 #include <array>
 #include <string>
+#include <vector>
 
 namespace pdq {
 
@@ -48,9 +49,17 @@ class Decomposition {
   // Processor coordinate along a that owns global cell g (0 <= g < globalCells).
   int ownerCoord(int a, int g) const;
 
+  // Moves the cuts between the cores along each active axis so that the cores hold about
+  // equal weight (weights[a][g]: the particles in the layer of cells g along a; each core
+  // keeps at least one cell). The cell lattice, and with it every result, stays the same;
+  // without it the cores have equal numbers of cells. The same weights give the same cuts
+  // on every rank.
+  void balance(const std::array<std::vector<double>, 3>& weights);
+
  private:
   Domain dom_;
   std::array<int, 3> nGC_{1, 1, 1}, nP_{1, 1, 1}, me_{0, 0, 0}, lo_{}, hi_{};
+  std::array<std::vector<int>, 3> cuts_;  // first cell of each core along each axis, then nGC
   std::array<double, 3> cell_{};
 };
 

@@ -165,6 +165,20 @@ void Simulation::setup() {
   }
   dec_ = std::make_unique<Decomposition>(makeDomain(), minCell, cfg_.procs, comm_.size(),
                                          comm_.rank(), cfg_.source);
+  {
+    // Cores of equal particle counts rather than equal cell counts (every rank holds every
+    // particle here, so all find the same cuts).
+    std::array<std::vector<double>, 3> weights;
+    for (int a = 0; a < dec_->dim(); ++a) weights[a].assign(dec_->globalCells(a), 0.0);
+    for (std::size_t k = 0; k < initial_.size(); ++k) {
+      const double* x = model_->shuffles() ? initial_.alterRow(k) : initial_.fixedRow(k);
+      for (int a = 0; a < dec_->dim(); ++a) {
+        const int n = dec_->globalCells(a), g = dec_->globalCell(a, x[a]);
+        weights[a][dec_->domain().periodic[a] ? ((g % n) + n) % n : std::clamp(g, 0, n - 1)] += 1;
+      }
+    }
+    dec_->balance(weights);
+  }
   // Shuffle once some particle may have left the slack of its cells. A model that asks for
   // a skin (cells wider than its horizon) gets the slack of the cells it asks for even in
   // wider ones: shuffles wrap periodic positions, which changes the bits of later pair

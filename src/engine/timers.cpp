@@ -1,6 +1,15 @@
 #include "engine/timers.hpp"
 
+#include <cstdio>
+#include <ctime>
+
 namespace pdq {
+
+double processCpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 const char* phaseName(Phase p) {
   switch (p) {
@@ -21,6 +30,20 @@ const char* phaseName(Phase p) {
     default:
       return "?";
   }
+}
+
+std::string cpuBreakdown(const Timers& t, double loopCpu) {
+  std::string s;
+  double rest = loopCpu;
+  char buf[64];
+  for (Phase p :
+       {Phase::Force, Phase::Integrate, Phase::Communication, Phase::Shuffle, Phase::Output}) {
+    std::snprintf(buf, sizeof buf, "%s=%.3f ", phaseName(p), t.cpu(p));
+    s += buf;
+    rest -= t.cpu(p);
+  }
+  std::snprintf(buf, sizeof buf, "other=%.3f", rest);
+  return s + buf;
 }
 
 }  // namespace pdq

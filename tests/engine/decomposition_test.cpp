@@ -27,6 +27,37 @@ TEST(Decomposition, CoresAreBlocksOfTheGlobalCellLattice) {
   EXPECT_EQ(covered, 10);
 }
 
+TEST(Decomposition, BalanceCutsAtEqualWeights) {
+  // 10 cells along X: the first 4 hold 3 particles each, the rest 1 (18 in all). Equal
+  // cell counts would give 3 ranks 9, 5 and 4 particles; the balanced cuts 6 each (2, 2
+  // and 6 cells).
+  std::array<std::vector<double>, 3> w{std::vector<double>{3, 3, 3, 3, 1, 1, 1, 1, 1, 1}, {}, {}};
+  const Domain d = box(10, 4, 1, 2);
+  std::array<int, 3> lo{}, hi{};
+  for (int r = 0; r < 3; ++r) {
+    Decomposition dec(d, 1.0, {3, 1, 1}, 3, r);
+    dec.balance(w);
+    lo[r] = dec.coreLo(0);
+    hi[r] = dec.coreHi(0);
+    for (int g = 0; g < 10; ++g) EXPECT_EQ(dec.ownerCoord(0, g) == r, g >= lo[r] && g < hi[r]);
+  }
+  EXPECT_EQ(lo, (std::array<int, 3>{0, 2, 4}));
+  EXPECT_EQ(hi, (std::array<int, 3>{2, 4, 10}));
+  // Every core keeps a cell, however the weight lies.
+  for (auto heavy : {0, 9}) {
+    w[0].assign(10, 0.0);
+    w[0][heavy] = 100;
+    int covered = 0;
+    for (int r = 0; r < 3; ++r) {
+      Decomposition dec(d, 1.0, {3, 1, 1}, 3, r);
+      dec.balance(w);
+      EXPECT_GE(dec.coreCells(0), 1);
+      covered += dec.coreCells(0);
+    }
+    EXPECT_EQ(covered, 10);
+  }
+}
+
 TEST(Decomposition, AutomaticGridCutsTheLongAxis) {
   Decomposition dec(box(40, 5, 5, 3), 1.0, {0, 0, 0}, 4, 0);
   EXPECT_EQ(dec.procs(0), 4);
