@@ -7,7 +7,7 @@
 #  2. throughput of mplm2d (the 4.06 m beam) and mplm3d (the §4.4.7 cantilever) at 1 and 2
 #     ranks over a few thousand steps: particle-steps/s and core-ns per interaction-step of
 #     the time loop (force + integrate + communication from timing.out, outputs left out),
-#     and the 1 -> 2 rank efficiency;
+#     the 1 -> 2 rank efficiency over the wall clock, and for mplm2d over CPU time as in 3;
 #  3. the §4.4.7 cantilever's CPU time (user + sys of all ranks, which other users of the
 #     machine change far less than the wall clock): per step from runs of 10 + S and 10
 #     steps, per interaction-step, the 1 -> 2 rank CPU efficiency (work added by the second
