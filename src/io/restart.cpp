@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <memory>
 #include <numeric>
 #include <optional>
 #include <sstream>
@@ -46,8 +48,8 @@ static bool fixedChange(const OutputContext& out) {
   return out.model.shuffles() && (p[0] || p[1] || p[2]);
 }
 
-static std::string rowsText(const std::string& header, const std::vector<double>& rows, int width) {
-  std::string text = header, line;
+static void appendRows(std::string& text, const std::vector<double>& rows, int width) {
+  std::string line;
   for (std::size_t r = 0; r < rows.size() / width; ++r) {
     const double* row = &rows[r * width];
     line = std::to_string(static_cast<Gid>(row[0]));
@@ -55,7 +57,6 @@ static std::string rowsText(const std::string& header, const std::vector<double>
     text += line;
     text += '\n';
   }
-  return text;
 }
 
 RestartNames restartNames(const std::string& dir, long step) {
@@ -63,82 +64,157 @@ RestartNames restartNames(const std::string& dir, long step) {
           bondRestartPath(dir, step)};
 }
 
-RestartTexts restartTexts(OutputContext& out, bool bonds) {
+namespace {
+
+// Particles per piece of the restart's gathers: rank 0 holds the rows and text of one piece
+// at a time, not of the whole problem.
+constexpr long kPieceParticles = 8192;
+
+enum Part { STATE, FIXED, BONDS, PARTICLES };
+// Receives the restart's text on rank 0, part after part in this order, each in pieces.
+using PartSink = std::function<void(Part, const std::string&)>;
+
+// Rows of the owned particles gathered to rank 0 by pieces of the ID range (about
+// kPieceParticles particles each) and handed to `take` there in ID order; collective.
+// `order`: the owned particles in ID order; `rows(i, out)` appends particle i's rows.
+void gatherByPieces(const OutputContext& out, const std::vector<std::size_t>& order, int width,
+                    int keyColumns,
+                    const std::function<void(std::size_t, std::vector<double>&)>& rows,
+                    const std::function<void(const std::vector<double>&)>& take) {
+  const Particles& P = out.ctx.particles;
+  const long total = out.comm.sum(static_cast<long>(P.owned()));
+  const auto maxId = static_cast<Gid>(
+      out.comm.max(order.empty() ? 0.0 : static_cast<double>(P.gid(order.back()))));
+  const long pieces = std::max(1L, (total + kPieceParticles - 1) / kPieceParticles);
+  const Gid span = maxId / pieces + 1;
+  std::vector<double> buf;
+  std::size_t k = 0;
+  for (long p = 0; p < pieces; ++p) {
+    const Gid hi = p + 1 == pieces ? maxId + 1 : (p + 1) * span;
+    buf.clear();
+    while (k < order.size() && P.gid(order[k]) < hi) rows(order[k++], buf);
+    const auto all = gatherSortedRows(out.comm, buf, width, keyColumns);
+    if (out.comm.root()) take(all);
+  }
+}
+
+// The restart state at out.step as text, handed to `sink` on rank 0; collective.
+void restartParts(OutputContext& out, bool bonds, const PartSink& sink) {
   const Particles& P = out.ctx.particles;
   const Bonds& B = out.ctx.bonds;
   const Schema& s = P.schema();
   const int nA = s.nAlter(), nB = B.nAttr(), nF = s.nFixed();
   const bool withFixed = fixedChange(out);
-  std::vector<double> rows, brows, frows;
-  if (bonds) brows.reserve(B.count() * (3 + nB));
+  const long nBondsTotal = out.comm.sum(static_cast<long>(B.count()));
+  const bool root = out.comm.root();
   // In ID order (each particle's bonds are in partner order), so that the rows are merged
   // rather than sorted on rank 0.
   std::vector<std::size_t> order(P.owned());
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(),
             [&](std::size_t a, std::size_t b) { return P.gid(a) < P.gid(b); });
-  for (const std::size_t i : order) {
-    rows.push_back(static_cast<double>(P.gid(i)));
-    rows.insert(rows.end(), P.alter(i), P.alter(i) + nA);
-    if (withFixed) {
-      frows.push_back(static_cast<double>(P.gid(i)));
-      frows.insert(frows.end(), P.fixed(i), P.fixed(i) + nF);
-    }
-    for (std::size_t b = B.begin(i); bonds && b < B.end(i); ++b) {
-      brows.push_back(static_cast<double>(P.gid(i)));
-      brows.push_back(static_cast<double>(B.partnerGid(b)));
-      brows.push_back(B.alive(b) ? 0 : 1);
-      brows.insert(brows.end(), B.attr(b), B.attr(b) + nB);
-    }
-  }
-  const auto all = gatherSortedRows(out.comm, rows, 1 + nA);
-  const long nBondsTotal = out.comm.sum(static_cast<long>(B.count()));
-  const auto allBonds =
-      nBondsTotal && bonds ? gatherSortedRows(out.comm, brows, 3 + nB, 2) : std::vector<double>{};
-  const auto allFixed =
-      withFixed ? gatherSortedRows(out.comm, frows, 1 + nF) : std::vector<double>{};
-  RestartTexts t;
-  t.step = out.step;
-  if (!out.comm.root()) return t;
-  std::string line;
-  {
+  std::string text, line;
+  if (root) {
     // Global values, the same on every rank.
-    std::string& f = t.state.emplace();
     auto row = [&](const char* key, const std::vector<double>& values) {
       line = key;
       for (double v : values) appendNumber(line, v);
-      f += line + "\n";
+      text += line + "\n";
     };
-    f += "# pdq state: step " + std::to_string(out.step) + "\n";
+    text = "# pdq state: step " + std::to_string(out.step) + "\n";
     row("dt", {out.ctx.dt()});
     row("integrator", out.ctx.integrator().state());
     row("model", out.model.saveState());
     if (!out.checks.empty()) row("checks", out.checks);
-    f += "bonds " + std::to_string(nBondsTotal) + "\n";  // so a lost or cut bonds file is seen
+    text += "bonds " + std::to_string(nBondsTotal) + "\n";  // so a lost or cut bonds file is seen
+    sink(STATE, text);
   }
+  // Each piece's rows as text, handed on.
+  auto rowsTo = [&](Part part, int width) {
+    return [&, part, width](const std::vector<double>& rows) {
+      text.clear();
+      appendRows(text, rows, width);
+      sink(part, text);
+    };
+  };
   if (withFixed) {
-    std::string header =
-        "# pdq fixed attributes: step " + std::to_string(out.step) + "\n# columns: id";
-    for (const auto& n : s.fixed) header += " " + n;
-    t.fixed = rowsText(header + "\n", allFixed, 1 + nF);
+    if (root) {
+      text = "# pdq fixed attributes: step " + std::to_string(out.step) + "\n# columns: id";
+      for (const auto& n : s.fixed) text += " " + n;
+      sink(FIXED, text + "\n");
+    }
+    gatherByPieces(
+        out, order, 1 + nF, 1,
+        [&](std::size_t i, std::vector<double>& r) {
+          r.push_back(static_cast<double>(P.gid(i)));
+          r.insert(r.end(), P.fixed(i), P.fixed(i) + nF);
+        },
+        rowsTo(FIXED, 1 + nF));
   }
   if (nBondsTotal && bonds) {
-    std::string& f = t.bonds.emplace();
-    f = "# pdq bonds: step " + std::to_string(out.step) + "\n# columns: id partner dead";
-    for (const auto& n : s.bond) f += " " + n;
-    f += "\n";
-    for (std::size_t r = 0; r < allBonds.size() / (3 + nB); ++r) {
-      const double* row = &allBonds[r * (3 + nB)];
-      line = std::to_string(static_cast<Gid>(row[0])) + " " +
-             std::to_string(static_cast<Gid>(row[1])) + (row[2] != 0 ? " 1" : " 0");
-      for (int c = 0; c < nB; ++c) appendNumber(line, row[3 + c]);
-      f += line + "\n";
+    if (root) {
+      text = "# pdq bonds: step " + std::to_string(out.step) + "\n# columns: id partner dead";
+      for (const auto& n : s.bond) text += " " + n;
+      sink(BONDS, text + "\n");
     }
+    gatherByPieces(
+        out, order, 3 + nB, 2,
+        [&](std::size_t i, std::vector<double>& r) {
+          for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+            r.push_back(static_cast<double>(P.gid(i)));
+            r.push_back(static_cast<double>(B.partnerGid(b)));
+            r.push_back(B.alive(b) ? 0 : 1);
+            r.insert(r.end(), B.attr(b), B.attr(b) + nB);
+          }
+        },
+        [&](const std::vector<double>& rows) {
+          text.clear();
+          for (std::size_t r = 0; r < rows.size() / (3 + nB); ++r) {
+            const double* row = &rows[r * (3 + nB)];
+            line = std::to_string(static_cast<Gid>(row[0])) + " " +
+                   std::to_string(static_cast<Gid>(row[1])) + (row[2] != 0 ? " 1" : " 0");
+            for (int c = 0; c < nB; ++c) appendNumber(line, row[3 + c]);
+            text += line + "\n";
+          }
+          sink(BONDS, text);
+        });
   }
-  std::ostringstream header;
-  header << "# pdq restart: step " << out.step << " time " << out.ctx.time() << "\n# columns: id";
-  for (const auto& n : s.alter) header << " " << n;
-  t.particles = rowsText(header.str() + "\n", all, 1 + nA);
+  if (root) {
+    std::ostringstream header;
+    header << "# pdq restart: step " << out.step << " time " << out.ctx.time() << "\n# columns: id";
+    for (const auto& n : s.alter) header << " " << n;
+    sink(PARTICLES, header.str() + "\n");
+  }
+  gatherByPieces(
+      out, order, 1 + nA, 1,
+      [&](std::size_t i, std::vector<double>& r) {
+        r.push_back(static_cast<double>(P.gid(i)));
+        r.insert(r.end(), P.alter(i), P.alter(i) + nA);
+      },
+      rowsTo(PARTICLES, 1 + nA));
+}
+
+}  // namespace
+
+RestartTexts restartTexts(OutputContext& out, bool bonds) {
+  RestartTexts t;
+  t.step = out.step;
+  restartParts(out, bonds, [&](Part part, const std::string& text) {
+    switch (part) {
+      case STATE:
+        t.state.emplace() += text;
+        break;
+      case FIXED:
+        (t.fixed ? *t.fixed : t.fixed.emplace()) += text;
+        break;
+      case BONDS:
+        (t.bonds ? *t.bonds : t.bonds.emplace()) += text;
+        break;
+      case PARTICLES:
+        t.particles += text;
+        break;
+    }
+  });
   return t;
 }
 
@@ -155,14 +231,22 @@ void RestartOutput::begin(OutputContext& out, bool resumed) {
 void RestartOutput::write(OutputContext& out) {
   if (out.step == lastWritten_) return;
   lastWritten_ = out.step;
-  const RestartTexts t = restartTexts(out);
-  if (!out.comm.root()) return;
-  // The particle file last: it always has its state and bond files beside it.
+  // Each file written as its pieces arrive (rank 0 never holds a whole one), and put in
+  // place when the next begins; the particle file last: it always has its state and bond
+  // files beside it.
   const RestartNames n = restartNames(out.outDir, out.step);
-  writeFileAtomically(n.state, *t.state);
-  if (t.fixed) writeFileAtomically(n.fixed, *t.fixed);
-  if (t.bonds) writeFileAtomically(n.bonds, *t.bonds);
-  writeFileAtomically(n.particles, t.particles);
+  const std::string* names[] = {&n.state, &n.fixed, &n.bonds, &n.particles};
+  std::unique_ptr<AtomicFile> file;
+  int current = -1;
+  restartParts(out, true, [&](Part part, const std::string& text) {
+    if (part != current) {
+      if (file) file->commit();
+      file = std::make_unique<AtomicFile>(*names[part]);
+      current = part;
+    }
+    file->stream().write(text.data(), static_cast<std::streamsize>(text.size()));
+  });
+  if (file) file->commit();
 }
 
 static long stepOfHeader(const std::string& text, const std::string& path) {
