@@ -36,6 +36,21 @@ inline Vec rotate(const Quat& q, const Vec& v) {
           v[2] + 2 * (q.w * t[2] + tt[2])};
 }
 
+// A rotation as a row-major 3 × 3 matrix: formed once, it turns a vector in nine products.
+using Mat = std::array<double, 9>;
+// R(q) of a unit quaternion: I + 2w [u]× + 2 [u]×² (rotate()'s terms).
+inline Mat rotationMatrix(const Quat& q) {
+  const double xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
+  const double xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
+  const double wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
+  return {1 - 2 * (yy + zz), 2 * (xy - wz), 2 * (xz + wy), 2 * (xy + wz),    1 - 2 * (xx + zz),
+          2 * (yz - wx),     2 * (xz - wy), 2 * (yz + wx), 1 - 2 * (xx + yy)};
+}
+inline Vec apply(const Mat& R, const Vec& v) {
+  return {R[0] * v[0] + R[1] * v[1] + R[2] * v[2], R[3] * v[0] + R[4] * v[1] + R[5] * v[2],
+          R[6] * v[0] + R[7] * v[1] + R[8] * v[2]};
+}
+
 // The unit quaternion of rotation vector θ. Small angles (|θ|/2 ≤ 0.1, the common case):
 // Taylor series of cos and sin(x)/x, exact to round-off there and cheaper than sin and cos.
 inline Quat expRot(const Vec& th) {
@@ -78,25 +93,6 @@ inline Vec logRot(Quat q) {
 inline Quat normalised(const Quat& q) {
   const double inv = 1 / std::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
   return {q.w * inv, q.x * inv, q.y * inv, q.z * inv};
-}
-
-// The gradient of a function U(θ) of a rotation vector θ = log q with respect to a small
-// global turn of q (q → exp(δφ) q), from its gradient g with respect to θ: J⁻ᵀ g with
-// J⁻¹ = I − ½[θ]× + c [θ]×² the inverse left Jacobian of the rotation group,
-// c = 1/|θ|² − (1 + cos|θ|)/(2|θ| sin|θ|) (by its series for |θ| ≤ 0.1). A moment conjugate
-// to θ becomes the moment conjugate to the turn the integrator applies.
-inline Vec turnGradient(const Vec& th, const Vec& g) {
-  const double t2 = dot(th, th);
-  double c;
-  if (t2 <= 0.01) {
-    c = 1.0 / 12 + t2 * (1.0 / 720 + t2 * (1.0 / 30240 + t2 * (1.0 / 1209600 + t2 / 47900160)));
-  } else {
-    const double t = std::sqrt(t2);
-    c = 1 / t2 - (1 + std::cos(t)) / (2 * t * std::sin(t));
-  }
-  const Vec a = cross(th, g);
-  const Vec b = cross(th, a);
-  return {g[0] + 0.5 * a[0] + c * b[0], g[1] + 0.5 * a[1] + c * b[1], g[2] + 0.5 * a[2] + c * b[2]};
 }
 
 }  // namespace pdq

@@ -29,15 +29,14 @@ struct Stiffness {
   auto operator<=>(const Stiffness&) const = default;
 };
 
-// The geometry of one interaction end: the reference direction n0 of the chord X_j − X_i
-// and the frame's second axis e2 (the third, e3 = n0 × e2, is formed when needed), its
-// length d, and where its constants and its partner are.
+// The geometry of one interaction end as its particle sees it: the reference direction n0
+// of the chord X_j − X_i, the frame's second and third axes e2 and e3 = n0 × e2, the length
+// d, and which Stiffness it has. Interactions share these (a lattice has few directions).
 struct Interaction {
-  std::int32_t j = 0;      // partner's local index
-  std::uint32_t rev = 0;   // an owned partner's bond back to this particle
-  std::uint32_t type = 0;  // its Stiffness in the model's table
-  Vec n0{}, e2{};
+  Vec n0{}, e2{}, e3{};
   double L0 = 0, invL0 = 0;
+  std::uint32_t type = 0;  // its Stiffness in the model's table
+  auto operator<=>(const Interaction&) const = default;
 };
 
 // The reference frame (n0, e2, e3) of an interaction: e2 ⟂ n0 from the global axis along
@@ -54,43 +53,43 @@ inline void referenceFrame(const Vec& n0, Vec& e2, Vec& e3) {
   e3 = cross(n0, e2);
 }
 
-// Sets the interaction's reference geometry from its chord r0: d, 1/d, n0, e2.
+// Sets the interaction's reference geometry from its chord r0: d, 1/d, n0, e2, e3.
 inline void setReference(Interaction& k, const Vec& r0) {
   k.L0 = std::sqrt(dot(r0, r0));
   k.invL0 = 1 / k.L0;
   k.n0 = {r0[0] * k.invL0, r0[1] * k.invL0, r0[2] * k.invL0};
-  Vec e3;
-  referenceFrame(k.n0, k.e2, e3);
+  referenceFrame(k.n0, k.e2, k.e3);
 }
 
-// The interaction as its other end holds it (partner i): n0 and e2 negate exactly, and
-// e3 = n0 × e2 stays (referenceFrame).
-inline Interaction reversed(const Interaction& k, std::int32_t i) {
+// The interaction as its other end holds it: n0 and e2 negate exactly, and e3 = n0 × e2
+// stays (referenceFrame).
+inline Interaction reversed(const Interaction& k) {
   Interaction r = k;
-  r.j = i;
   r.n0 = {-k.n0[0], -k.n0[1], -k.n0[2]};
   r.e2 = {-k.e2[0], -k.e2[1], -k.e2[2]};
   return r;
 }
 
-// What the co-rotational form needs beyond the end rotations to turn the element's end
-// loads into the gradient of its energy: the frame qb = qs ⊗ qm built from the mean triad qm
-// = p/|p| (p = q_i ± q_j) and the smallest rotation qs from a = R(qm) n0 to the chord's
-// direction e1; the end rotations vi, vj = log(qb* ⊗ q) in reference components; sgn the
-// sign that put q_j on q_i's hemisphere in p.
+// Two doubles side by side (GCC's vector extension): the co-rotational form carries the
+// axes e2 and e3 together, in the two halves of one SSE register.
+using Pair = double __attribute__((vector_size(16)));
+inline Pair swapped(Pair p) { return Pair{p[1], p[0]}; }
+
+// The co-rotational form's current geometry: the chord's direction e1 and the interaction's
+// reference axes e2, e3 carried by each end's triad, t2 = R e2 and t3 = R e3, by component:
+// ti[c] = (t2i[c], t3i[c]).
 struct Frame {
-  Quat qb, qs, p, qi, qj;
-  Vec a, e1, vi, vj;
-  double L, sgn;
+  Vec e1;
+  Pair ti[3], tj[3];
 };
 
 // Deformation of the interaction in its local frame: elongation, chord length, the end
-// rotations relative to the frame in local components (θ̄x torsion, θ̄y, θ̄z bending), and
-// (co-rotational form) the frame.
+// rotations relative to the chord in local components (θ̄x torsion, θ̄y, θ̄z bending; the
+// co-rotational form holds the twist θ̄x_j − θ̄x_i in tj[0] and 0 in ti[0]), and (co-rotational
+// form) the frame.
 struct Chord {
   double da, invL;
   Vec ti, tj;
-  Vec e2, e3;  // the reference frame's second and third axes
   Frame frame;
   bool rotated;
 };
@@ -99,7 +98,7 @@ struct Chord {
 // φ = n0 × (u_j − u_i)/d; the end rotations are the rotation vectors minus φ.
 inline Chord smallChord(const Interaction& k, const Vec& d, const Vec& thi, const Vec& thj) {
   const Vec phi = cross(k.n0, d);
-  const Vec &e2 = k.e2, e3 = cross(k.n0, e2);
+  const Vec &e2 = k.e2, &e3 = k.e3;
   const Vec bi{thi[0] - phi[0] * k.invL0, thi[1] - phi[1] * k.invL0, thi[2] - phi[2] * k.invL0};
   const Vec bj{thj[0] - phi[0] * k.invL0, thj[1] - phi[1] * k.invL0, thj[2] - phi[2] * k.invL0};
   Chord c;  // its frame belongs to the co-rotational form: left unset, not zeroed each time
@@ -107,78 +106,65 @@ inline Chord smallChord(const Interaction& k, const Vec& d, const Vec& thi, cons
   c.invL = k.invL0;
   c.ti = {dot(bi, k.n0), dot(bi, e2), dot(bi, e3)};
   c.tj = {dot(bj, k.n0), dot(bj, e2), dot(bj, e3)};
-  c.e2 = e2;
-  c.e3 = e3;
   c.rotated = false;
   return c;
 }
 
-// Co-rotational (after Crisfield): the frame is the mean of the two end triads, turned by
-// the smallest rotation that lays its first axis on the current chord r; each end's
-// rotation relative to that frame bends and twists the element. Rigid motions of any size
-// thus give no force. qi, qj: the particles' orientations.
-inline Chord corotChord(const Interaction& k, const Vec& r, const Quat& qi, const Quat& qj) {
+// Co-rotational: each end's triad carries the interaction's reference axes e2, e3 along;
+// the end's bending rotations are read against the current chord direction e1, θ̄y = t3·e1
+// and θ̄z = −t2·e1, and the twist between the ends is ½ (t3i·t2j − t2i·t3j). They are dot
+// products of rotated vectors, so rigid motions of any size leave them unchanged (no force),
+// and to first order they are the small form's θ̄ (the same stiffness at small deformation).
+// Ri, Rj: the particles' rotation matrices.
+inline Chord corotChord(const Interaction& k, const Vec& r, const Mat& Ri, const Mat& Rj) {
   const double L = std::sqrt(dot(r, r)), invL = 1 / L;
-  // Mean triad: q and −q are one rotation, so add the pair on the same hemisphere.
-  const double sgn = qi.w * qj.w + qi.x * qj.x + qi.y * qj.y + qi.z * qj.z >= 0 ? 1.0 : -1.0;
-  const Quat p{qi.w + sgn * qj.w, qi.x + sgn * qj.x, qi.y + sgn * qj.y, qi.z + sgn * qj.z};
-  const Quat qm = normalised(p);
-  const Vec a = rotate(qm, k.n0);
-  const Vec e1{r[0] * invL, r[1] * invL, r[2] * invL};
-  const Vec ax = cross(a, e1);
-  const Quat qs = normalised({1 + dot(a, e1), ax[0], ax[1], ax[2]});
-  const Quat qb = mul(qs, qm);
-  const Quat qbc = conj(qb);
-  const Vec vi = logRot(mul(qbc, qi)), vj = logRot(mul(qbc, qj));
-  const Vec &e2 = k.e2, e3 = cross(k.n0, e2);
-  return {L - k.L0,
-          invL,
-          {dot(vi, k.n0), dot(vi, e2), dot(vi, e3)},
-          {dot(vj, k.n0), dot(vj, e2), dot(vj, e3)},
-          e2,
-          e3,
-          {qb, qs, p, qi, qj, a, e1, vi, vj, L, sgn},
-          true};
+  Frame fr;
+  fr.e1 = {r[0] * invL, r[1] * invL, r[2] * invL};
+  const Pair c0{k.e2[0], k.e3[0]}, c1{k.e2[1], k.e3[1]}, c2{k.e2[2], k.e3[2]};
+  for (int c = 0; c < 3; ++c) {
+    fr.ti[c] = Ri[3 * c] * c0 + Ri[3 * c + 1] * c1 + Ri[3 * c + 2] * c2;
+    fr.tj[c] = Rj[3 * c] * c0 + Rj[3 * c + 1] * c1 + Rj[3 * c + 2] * c2;
+  }
+  // (t2·e1, t3·e1) at each end, and (t2i·t3j, t3i·t2j).
+  const Pair si = fr.ti[0] * fr.e1[0] + fr.ti[1] * fr.e1[1] + fr.ti[2] * fr.e1[2];
+  const Pair sj = fr.tj[0] * fr.e1[0] + fr.tj[1] * fr.e1[1] + fr.tj[2] * fr.e1[2];
+  Pair tw = fr.ti[0] * swapped(fr.tj[0]);
+  for (int c = 1; c < 3; ++c) tw += fr.ti[c] * swapped(fr.tj[c]);
+  return {L - k.L0, invL, {0, si[1], -si[0]}, {0.5 * (tw[1] - tw[0]), sj[1], -sj[0]}, fr, true};
 }
 
-// The force and moment on i in the co-rotational form, exactly minus the gradient of the
-// element's energy U(L, t_i, t_j): N = ∂U/∂L, gi and gj = ∂U/∂t (reference components).
-// With global turns δφ of the triads and the frame's turn δβ,
-//   δU = N e1·δr + h_i·(δφ_i − δβ) + h_j·(δφ_j − δβ),  h = R(qb) J⁻ᵀ(v) g,
-// and δβ = (spin of qs) + R(qs) (spin of qm) follows from the chord (δe1 = P δr / L,
-// P = I − e1 e1ᵀ) and from the triads through the mean p = q_i ± q_j; with H = h_i + h_j:
-//   H·δβ = δr·P G_b / L + δμ·G,  δμ·G = δφ_i·(u₀ G + u × G)/|p|² + (j's part),
-// (u₀, u) = q_i ⊗ p*, G_b = W × a − κ a, G = a × (e1 × W − κ e1) + R(qs)ᵀ H,
-// W = H − (c × H)/(1 + a·e1), κ = (H·c)/(1 + a·e1), c = a × e1. The moment on j (when `mj`
-// is given) is the same with h_j and ± (q_j ⊗ p*) (p holds ± q_j); the force on j is −f.
-inline void corotLoad(const Frame& fr, double N, const Vec& gi, const Vec& gj, Vec& f, Vec& m,
-                      Vec* mj) {
-  const Vec hi = rotate(fr.qb, turnGradient(fr.vi, gi));
-  const Vec hj = rotate(fr.qb, turnGradient(fr.vj, gj));
-  const Vec H{hi[0] + hj[0], hi[1] + hj[1], hi[2] + hj[2]};
-  const Vec& a = fr.a;
+// The force and moments of the co-rotational form, exactly minus the gradient of the
+// element's energy U(L, θ̄): N = ∂U/∂L, T = ∂U/∂(twist), M = ∂U/∂θ̄ (My, Mz at each end).
+// With global turns δφ of the triads (δt = δφ × t) and δe1 = (I − e1 e1ᵀ) δr / L:
+//   force on i  N e1 + (v − (v·e1) e1)/L,  v = My_i t3i − Mz_i t2i + My_j t3j − Mz_j t2j,
+//   moment on i e1 × (My_i t3i − Mz_i t2i) − T w,   on j  e1 × (My_j t3j − Mz_j t2j) + T w,
+// w = ½ (t3i × t2j − t2i × t3j); the force on j is minus that on i.
+inline void corotLoad(const Frame& fr, double invL, double N, double T, double Myi, double Mzi,
+                      double Myj, double Mzj, Vec& f, Vec& m, Vec* mj) {
   const Vec& e1 = fr.e1;
-  const Vec c = cross(a, e1);
-  const double inv = 1 / (1 + dot(a, e1)), kappa = dot(H, c) * inv;
-  const Vec cH = cross(c, H);
-  const Vec W{H[0] - cH[0] * inv, H[1] - cH[1] * inv, H[2] - cH[2] * inv};
-  const Vec Wa = cross(W, a), eW = cross(e1, W);
-  const Vec Gb{Wa[0] - kappa * a[0], Wa[1] - kappa * a[1], Wa[2] - kappa * a[2]};
-  const Vec Ga{eW[0] - kappa * e1[0], eW[1] - kappa * e1[1], eW[2] - kappa * e1[2]};
-  const Vec aGa = cross(a, Ga), sH = rotate(conj(fr.qs), H);
-  const Vec G{aGa[0] + sH[0], aGa[1] + sH[1], aGa[2] + sH[2]};
-  const double along = dot(Gb, e1), invL = 1 / fr.L;
-  const Quat u = mul(fr.qi, conj(fr.p));
-  const double invP = 1 / (fr.p.w * fr.p.w + fr.p.x * fr.p.x + fr.p.y * fr.p.y + fr.p.z * fr.p.z);
-  const Vec uG = cross({u.x, u.y, u.z}, G);
+  const Pair Mi{-Mzi, Myi}, Mj{-Mzj, Myj};
+  Vec bi, bj, v, w;
+  for (int c = 0; c < 3; ++c) {
+    const Pair pi = fr.ti[c] * Mi, pj = fr.tj[c] * Mj;
+    bi[c] = pi[0] + pi[1];
+    bj[c] = pj[0] + pj[1];
+    v[c] = bi[c] + bj[c];
+  }
+  for (int c = 0; c < 3; ++c) {
+    const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
+    // (t2i × t3j, t3i × t2j) component c
+    const Pair x = fr.ti[c1] * swapped(fr.tj[c2]) - fr.ti[c2] * swapped(fr.tj[c1]);
+    w[c] = 0.5 * (x[1] - x[0]);
+  }
+  const Vec ci = cross(e1, bi);
+  const double along = dot(v, e1);
   for (int d = 0; d < 3; ++d) {
-    f[d] = N * e1[d] - (Gb[d] - along * e1[d]) * invL;
-    m[d] = -hi[d] + (u.w * G[d] + uG[d]) * invP;
+    f[d] = N * e1[d] + (v[d] - along * e1[d]) * invL;
+    m[d] = ci[d] - T * w[d];
   }
   if (!mj) return;
-  const Quat uj = mul(fr.qj, conj(fr.p));
-  const Vec ujG = cross({uj.x, uj.y, uj.z}, G);
-  for (int d = 0; d < 3; ++d) (*mj)[d] = -hj[d] + fr.sgn * (uj.w * G[d] + ujG[d]) * invP;
+  const Vec cj = cross(e1, bj);
+  for (int d = 0; d < 3; ++d) (*mj)[d] = cj[d] + T * w[d];
 }
 
 struct EndLoad {
@@ -223,17 +209,11 @@ inline EndLoad elasticForce(const Interaction& g, const Stiffness& k, const Chor
   const double Myi = kb * (4 * ti[1] + 2 * tj[1]), Myj = kb * (2 * ti[1] + 4 * tj[1]);
   const double Mzi = kb * (4 * ti[2] + 2 * tj[2]), Mzj = kb * (2 * ti[2] + 4 * tj[2]);
   const double T = k.kt * bendKeep * (tj[0] - ti[0]);
-  const Vec& e2 = ch.e2;
-  const Vec& e3 = ch.e3;
+  const Vec& e2 = g.e2;
+  const Vec& e3 = g.e3;
   Vec f, m;
   if (ch.rotated) {
-    // ∂U/∂t at each end: (−T, My_i, Mz_i) and (T, My_j, Mz_j).
-    Vec gi, gj;
-    for (int d = 0; d < 3; ++d) {
-      gi[d] = -T * g.n0[d] + Myi * e2[d] + Mzi * e3[d];
-      gj[d] = T * g.n0[d] + Myj * e2[d] + Mzj * e3[d];
-    }
-    corotLoad(ch.frame, N, gi, gj, f, m, mj);
+    corotLoad(ch.frame, ch.invL, N, T, Myi, Mzi, Myj, Mzj, f, m, mj);
     return {f, m, axialKeep};
   }
   // Local components on i: force (N, −(Mz_i+Mz_j)/L, (My_i+My_j)/L), moment (T, −My_i, −Mz_i).

@@ -97,26 +97,47 @@ class Mplm3d final : public Model {
     in_.fill(
         P, [&](const double* f) { return massOf(f); },
         [&](const double* f) { return inertiaOf(f); });
-    if (ctx.bonds.count() > std::numeric_limits<std::uint32_t>::max())
+    const Bonds& B = ctx.bonds;
+    if (B.count() > std::numeric_limits<std::uint32_t>::max())
       throw std::length_error("mplm3d: more than 2^32 interaction ends on one rank");
-    inter_.resize(ctx.bonds.count());
+    // Each owned particle receives the loads of its interactions with partners of smaller
+    // ID (the first bonds of its row) in records of its own, after those of the particles
+    // before it.
+    recvStart_.assign(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      std::size_t b = B.begin(i);
+      while (b < B.end(i) && B.partnerGid(b) < P.gid(i)) ++b;
+      recvStart_[i + 1] = recvStart_[i] + static_cast<std::uint32_t>(b - B.begin(i));
+    }
+    geoOf_.resize(B.count());
+    target_.assign(B.count(), 0);
+    geo_.clear();
     types_.clear();
     std::map<Stiffness, std::uint32_t> typeOf;
+    std::map<Interaction, std::uint32_t> geoIndex;
     const std::vector<double> surface = surfaceFactors(ctx);
     // Gershgorin bound of the largest eigenvalue of M⁻¹C, C the damping of eq. 4.21.
     double gamma = 0;
     for (std::size_t i = 0; i < n; ++i) {
       double gt = 0, gr = 0;
-      for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
-        const auto j = static_cast<std::size_t>(ctx.bonds.partner(b));
-        Interaction& k = inter_[b];
-        k.j = static_cast<std::int32_t>(j);
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const auto j = static_cast<std::size_t>(B.partner(b));
+        Interaction k;
         setReference(k, chord0(P, i, j));
         const Stiffness t = stiffness(P, i, j, k.L0, surface[b]);
         const auto [it, added] = typeOf.try_emplace(t, static_cast<std::uint32_t>(types_.size()));
         if (added) types_.push_back(t);
         k.type = it->second;
-        if (j < n) k.rev = static_cast<std::uint32_t>(reverse(ctx.bonds, j, P.gid(i)));
+        const auto [g, fresh] = geoIndex.try_emplace(k, static_cast<std::uint32_t>(geo_.size()));
+        if (fresh) geo_.push_back(k);
+        geoOf_[b] = g->second;
+        // Where this end puts the partner's share when it evaluates the interaction: the
+        // owned partner's record, or (a ghost partner of smaller ID) its own.
+        if (P.gid(i) < B.partnerGid(b) && j < n)
+          target_[b] =
+              recvStart_[j] + static_cast<std::uint32_t>(reverse(B, j, P.gid(i)) - B.begin(j));
+        else if (j >= n && B.partnerGid(b) < P.gid(i))
+          target_[b] = recvStart_[i] + static_cast<std::uint32_t>(b - B.begin(i));
         gt += 2 * t.c;
         gr += 2 * t.cr;
       }
@@ -134,52 +155,52 @@ class Mplm3d final : public Model {
   }
 
   // Each interaction is evaluated once, from its end with the smaller global ID, which
-  // gives both its particles their loads and both copies of its state; an interaction with
-  // a ghost is evaluated alike by the two ranks that hold it (its constants are symmetric
-  // in its ends and its reference chord negates exactly), so results do not depend on
-  // ranks or threads. Each particle then sums its ends in bond order, with damping.
-  [[gnu::flatten]] void force(Context& ctx) override {
+  // gives both its particles their loads (elastic and damping) and both copies of its
+  // state; an interaction with a ghost is evaluated alike by the two ranks that hold it (its
+  // constants are symmetric in its ends and its reference chord negates exactly). A
+  // particle sums the loads of its interactions with larger IDs as it evaluates them, in
+  // bond order, then those it received from smaller IDs, in bond order: the same sums on
+  // any ranks and threads.
+  void force(Context& ctx) override {
     Particles& P = ctx.particles;
     Bonds& B = ctx.bonds;
+    orientations(P);
+    if (corot_)
+      evaluate<true>(P, B);
+    else
+      evaluate<false>(P, B);
+  }
+
+ private:
+  template <bool Corot>
+  [[gnu::flatten]] void evaluate(Particles& P, Bonds& B) {
     const long n = static_cast<long>(P.owned());
-    if (!corot_) rotationVectors(P);
-    ends_.resize(B.count());
+    recv_.resize(recvStart_.empty() ? 0 : recvStart_.back());
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < n; ++i) {
       const Gid gi = P.gid(i);
+      Vec f{}, m{};
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
         const auto j = static_cast<std::size_t>(B.partner(b));
         const bool first = gi < B.partnerGid(b), ghost = j >= static_cast<std::size_t>(n);
         if (!first && !ghost) continue;  // evaluated from j
-        const Interaction& k = inter_[b];
-        const Stiffness& t = types_[k.type];
-        Vec mj;
+        const Interaction& k = geo_[geoOf_[b]];
         if (first) {
-          const EndLoad e = load(P, k, i, B.attr(b), true, &mj);
-          const double c = e.keep * t.c, cr = e.keep * t.cr;
-          ends_[b] = {e.f, e.m, c, cr};
+          const Loads l = loads<Corot>(P, k, static_cast<std::size_t>(i), j, B.attr(b));
+          for (int d = 0; d < 3; ++d) {
+            f[d] += l.f[d];
+            m[d] += l.mi[d];
+          }
           if (!ghost) {
-            const std::size_t r = k.rev;
-            ends_[r] = {{-e.f[0], -e.f[1], -e.f[2]}, mj, c, cr};
-            std::copy_n(B.attr(b), N_BOND, B.attr(r));
+            recv_[target_[b]] = {{-l.f[0], -l.f[1], -l.f[2]}, l.mj};
+            const std::size_t r = B.begin(j) + (target_[b] - recvStart_[j]);
+            const double* s = B.attr(b);
+            double* t = B.attr(r);
+            for (int q = 0; q < N_BOND; ++q) t[q] = s[q];
           }
         } else {
-          const Interaction kj = reversed(k, static_cast<std::int32_t>(i));  // as j's owner
-          const EndLoad e = load(P, kj, j, B.attr(b), true, &mj);
-          ends_[b] = {{-e.f[0], -e.f[1], -e.f[2]}, mj, e.keep * t.c, e.keep * t.cr};
-        }
-      }
-    }
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      const double* a = P.alter(i);
-      Vec f{}, m{};
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const double* aj = P.alter(B.partner(b));
-        const End& e = ends_[b];
-        for (int d = 0; d < 3; ++d) {
-          f[d] += e.f[d] + e.c * (aj[VX + d] - a[VX + d]);
-          m[d] += e.m[d] + e.cr * (aj[WX + d] - a[WX + d]);
+          const Loads l = loads<Corot>(P, reversed(k), j, static_cast<std::size_t>(i), B.attr(b));
+          recv_[target_[b]] = {{-l.f[0], -l.f[1], -l.f[2]}, l.mj};
         }
       }
       double* F = P.integ(i);
@@ -188,8 +209,18 @@ class Mplm3d final : public Model {
         F[MOMENT_X + d] = m[d];
       }
     }
+#pragma omp parallel for schedule(static)
+    for (long i = 0; i < n; ++i) {
+      double* F = P.integ(i);
+      for (std::uint32_t r = recvStart_[i]; r < recvStart_[i + 1]; ++r)
+        for (int d = 0; d < 3; ++d) {
+          F[FORCE_X + d] += recv_[r].f[d];
+          F[MOMENT_X + d] += recv_[r].m[d];
+        }
+    }
   }
 
+ public:
   // Translations and the orientation (a unit quaternion) with the angular velocity in the
   // global frame; supports, bearings and loads from the particle's constraint bits and its
   // load and displacement columns.
@@ -214,7 +245,7 @@ class Mplm3d final : public Model {
   void field(const Context& ctx, int k, std::span<double> out) const override {
     const Particles& P = ctx.particles;
     const Bonds& B = ctx.bonds;
-    if (k >= 9 && !corot_) rotationVectors(P);
+    if (k >= 9) orientations(P);
     for (std::size_t i = 0; i < out.size(); ++i) {
       const double* a = P.alter(i);
       const double* X = P.fixed(i);
@@ -395,11 +426,32 @@ class Mplm3d final : public Model {
     return k;
   }
 
-  // The elastic load of interaction k on particle i in the model's kinematics, and with `mj` the
-  // moment on its partner; the rotation vectors of the small form come from rotationVectors().
-  EndLoad load(const Particles& P, const Interaction& k, std::size_t i, double* state, bool update,
-               Vec* mj = nullptr) const {
-    return elasticForce(k, types_[k.type], chord(P, k, i), par_.law, state, update, mj);
+  // The elastic load of interaction k (as particle i holds it) on i; the rotation
+  // matrices or vectors come from orientations().
+  EndLoad load(const Particles& P, const Interaction& k, std::size_t i, std::size_t j,
+               double* state, bool update) const {
+    return elasticForce(k, types_[k.type], chord(P, k, i, j), par_.law, state, update);
+  }
+  // The loads of interaction k (as i holds it) on both ends with eq. 4.21's damping after
+  // damage, updating its state: the force on i (j's is its opposite) and the two moments.
+  struct Loads {
+    Vec f, mi, mj;
+  };
+  template <bool Corot>
+  Loads loads(const Particles& P, const Interaction& k, std::size_t i, std::size_t j,
+              double* state) const {
+    const Stiffness& t = types_[k.type];
+    Loads l;
+    const EndLoad e = elasticForce(k, t, chordOf<Corot>(P, k, i, j), par_.law, state, true, &l.mj);
+    const double c = e.keep * t.c, cr = e.keep * t.cr;
+    const double *a = P.alter(i), *aj = P.alter(j);
+    for (int d = 0; d < 3; ++d) {
+      const double dw = cr * (aj[WX + d] - a[WX + d]);
+      l.f[d] = e.f[d] + c * (aj[VX + d] - a[VX + d]);
+      l.mi[d] = e.m[d] + dw;
+      l.mj[d] -= dw;
+    }
+    return l;
   }
   // The bond of owned particle j whose partner is gid (bonds are sorted by partner ID).
   static std::size_t reverse(const Bonds& B, std::size_t j, Gid gid) {
@@ -413,13 +465,20 @@ class Mplm3d final : public Model {
     }
     return lo;
   }
-  Chord chord(const Particles& P, const Interaction& k, std::size_t i) const {
-    const double *a = P.alter(i), *aj = P.alter(k.j);
+  Chord chord(const Particles& P, const Interaction& k, std::size_t i, std::size_t j) const {
+    return corot_ ? chordOf<true>(P, k, i, j) : chordOf<false>(P, k, i, j);
+  }
+  template <bool Corot>
+  Chord chordOf(const Particles& P, const Interaction& k, std::size_t i, std::size_t j) const {
+    const double *a = P.alter(i), *aj = P.alter(j);
     const Vec r{aj[AX] - a[AX], aj[AY] - a[AY], aj[AZ] - a[AZ]};
-    if (corot_) return corotChord(k, r, orientation(a), orientation(aj));
-    const Vec r0 = chord0(P, i, static_cast<std::size_t>(k.j));
-    const Vec d{r[0] - r0[0], r[1] - r0[1], r[2] - r0[2]};
-    return smallChord(k, d, th_[i], th_[static_cast<std::size_t>(k.j)]);
+    if constexpr (Corot) {
+      return corotChord(k, r, rot_[i], rot_[j]);
+    } else {
+      const Vec r0 = chord0(P, i, j);
+      const Vec d{r[0] - r0[0], r[1] - r0[1], r[2] - r0[2]};
+      return smallChord(k, d, th_[i], th_[j]);
+    }
   }
 
   // The strain energy of the lattice at its current damage (each interaction is held by
@@ -428,12 +487,13 @@ class Mplm3d final : public Model {
   double potential(const Context& ctx) const {
     const Particles& P = ctx.particles;
     const Bonds& B = ctx.bonds;
-    if (!corot_) rotationVectors(P);
+    orientations(P);
     return ctx.sumOwned([&](std::size_t i) {
       double e = 0;
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const Interaction& k = inter_[b];
-        e += 0.5 * elasticEnergy(k, types_[k.type], chord(P, k, i), par_.law, B.attr(b));
+        const Interaction& k = geo_[geoOf_[b]];
+        const auto j = static_cast<std::size_t>(B.partner(b));
+        e += 0.5 * elasticEnergy(k, types_[k.type], chord(P, k, i, j), par_.law, B.attr(b));
       }
       return e;
     });
@@ -441,13 +501,19 @@ class Mplm3d final : public Model {
 
   static Quat orientation(const double* a) { return {a[QW], a[QX], a[QY], a[QZ]}; }
 
-  // The rotation vector θ = log q of every local particle (owned and ghosts), for the small
-  // form, once per step.
-  void rotationVectors(const Particles& P) const {
+  // Each local particle's (owned and ghosts) rotation matrix in the co-rotational form, its
+  // rotation vector θ = log q in the small form: once per evaluation of the lattice.
+  void orientations(const Particles& P) const {
     const long nl = static_cast<long>(P.local());
-    th_.resize(P.local());
+    if (corot_) {
+      rot_.resize(P.local());
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < nl; ++i) th_[i] = logRot(orientation(P.alter(i)));
+      for (long i = 0; i < nl; ++i) rot_[i] = rotationMatrix(orientation(P.alter(i)));
+    } else {
+      th_.resize(P.local());
+#pragma omp parallel for schedule(static)
+      for (long i = 0; i < nl; ++i) th_[i] = logRot(orientation(P.alter(i)));
+    }
   }
 
   // ω_max of the undamaged lattice in small deformation, six DOFs per particle.
@@ -467,8 +533,8 @@ class Mplm3d final : public Model {
         double sum[6] = {0, 0, 0, 0, 0, 0};
         const double* ui = &u[6 * i];
         for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b) {
-          const Interaction& k = inter_[b];
-          const double* uj = &u[6 * static_cast<std::size_t>(k.j)];
+          const Interaction& k = geo_[geoOf_[b]];
+          const double* uj = &u[6 * static_cast<std::size_t>(ctx.bonds.partner(b))];
           const Vec d{uj[0] - ui[0], uj[1] - ui[1], uj[2] - ui[2]};
           const EndLoad e =
               elasticForce(k, types_[k.type], smallChord(k, d, rowVec(ui, 3), rowVec(uj, 3)),
@@ -527,11 +593,12 @@ class Mplm3d final : public Model {
     const double* a = P.alter(i);
     double s[3][3] = {};
     for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-      const Interaction& k = inter_[b];
-      const double* aj = P.alter(k.j);
+      const Interaction& k = geo_[geoOf_[b]];
+      const auto j = static_cast<std::size_t>(B.partner(b));
+      const double* aj = P.alter(j);
       double state[N_BOND];
       std::copy_n(B.attr(b), N_BOND, state);
-      const EndLoad e = load(P, k, i, state, false);
+      const EndLoad e = load(P, k, i, j, state, false);
       for (int p = 0; p < 3; ++p)
         for (int q = 0; q < 3; ++q) s[p][q] += (aj[AX + p] - a[AX + p]) * e.f[q];
     }
@@ -550,16 +617,20 @@ class Mplm3d final : public Model {
   bool corot_ = true;    // kinematics = "corotational"
   bool surface_ = true;  // surface_correction
   ElasticConstants k_;
-  std::vector<Interaction> inter_;  // per bond, same index as ctx.bonds
-  std::vector<Stiffness> types_;    // the distinct constants of the interactions
-  // Per bond, this step: the elastic load on its particle and the damping coefficients
-  // after damage (keep × c, keep × cr).
-  struct End {
+  std::vector<Interaction> geo_;      // the distinct geometries of the interaction ends
+  std::vector<Stiffness> types_;      // the distinct constants of the interactions
+  std::vector<std::uint32_t> geoOf_;  // per bond (same index as ctx.bonds): its geometry
+  // Per bond whose particle evaluates it: the record that receives the partner's share.
+  std::vector<std::uint32_t> target_;
+  // Per owned particle: its records of loads from partners of smaller ID, from
+  // recvStart_[i] to recvStart_[i + 1], in bond order.
+  std::vector<std::uint32_t> recvStart_;
+  struct Received {
     Vec f, m;
-    double c, cr;
   };
-  std::vector<End> ends_;
-  mutable std::vector<Vec> th_;  // rotation vector per local particle (small form)
+  std::vector<Received> recv_;
+  mutable std::vector<Mat> rot_;  // rotation matrix per local particle (co-rotational form)
+  mutable std::vector<Vec> th_;   // rotation vector per local particle (small form)
   mplm::Inertia in_;
   double omegaMax_ = 0;
 };
