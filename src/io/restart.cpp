@@ -129,27 +129,26 @@ void restartParts(OutputContext& out, bool bonds, const PartSink& sink) {
     text += "bonds " + std::to_string(nBondsTotal) + "\n";  // so a lost or cut bonds file is seen
     sink(STATE, text);
   }
-  // Each piece's rows as text, handed on.
-  auto rowsTo = [&](Part part, int width) {
-    return [&, part, width](const std::vector<double>& rows) {
-      text.clear();
-      appendRows(text, rows, width);
-      sink(part, text);
-    };
-  };
-  if (withFixed) {
-    if (root) {
-      text = "# pdq fixed attributes: step " + std::to_string(out.step) + "\n# columns: id";
-      for (const auto& n : s.fixed) text += " " + n;
-      sink(FIXED, text + "\n");
-    }
+  // A file of one row per particle: its ID, then the `n` numbers at `row(i)`.
+  auto perParticle = [&](Part part, const std::string& header, int n, auto row) {
+    if (root) sink(part, header);
     gatherByPieces(
-        out, order, 1 + nF, 1,
+        out, order, 1 + n, 1,
         [&](std::size_t i, std::vector<double>& r) {
           r.push_back(static_cast<double>(P.gid(i)));
-          r.insert(r.end(), P.fixed(i), P.fixed(i) + nF);
+          r.insert(r.end(), row(i), row(i) + n);
         },
-        rowsTo(FIXED, 1 + nF));
+        [&](const std::vector<double>& rows) {
+          text.clear();
+          appendRows(text, rows, 1 + n);
+          sink(part, text);
+        });
+  };
+  if (withFixed) {
+    std::string header =
+        "# pdq fixed attributes: step " + std::to_string(out.step) + "\n# columns: id";
+    for (const auto& n : s.fixed) header += " " + n;
+    perParticle(FIXED, header + "\n", nF, [&](std::size_t i) { return P.fixed(i); });
   }
   if (nBondsTotal && bonds) {
     if (root) {
@@ -179,19 +178,10 @@ void restartParts(OutputContext& out, bool bonds, const PartSink& sink) {
           sink(BONDS, text);
         });
   }
-  if (root) {
-    std::ostringstream header;
-    header << "# pdq restart: step " << out.step << " time " << out.ctx.time() << "\n# columns: id";
-    for (const auto& n : s.alter) header << " " << n;
-    sink(PARTICLES, header.str() + "\n");
-  }
-  gatherByPieces(
-      out, order, 1 + nA, 1,
-      [&](std::size_t i, std::vector<double>& r) {
-        r.push_back(static_cast<double>(P.gid(i)));
-        r.insert(r.end(), P.alter(i), P.alter(i) + nA);
-      },
-      rowsTo(PARTICLES, 1 + nA));
+  std::ostringstream header;
+  header << "# pdq restart: step " << out.step << " time " << out.ctx.time() << "\n# columns: id";
+  for (const auto& n : s.alter) header << " " << n;
+  perParticle(PARTICLES, header.str() + "\n", nA, [&](std::size_t i) { return P.alter(i); });
 }
 
 }  // namespace
