@@ -373,17 +373,18 @@ RestartState parseRestart(const RestartTexts& t, const RestartNames& names, Prob
   }
   const int nB = schema.nBond(), width = 3 + nB;
   // Each bond's row (owner, partner, dead, attributes) and where it was read: its line in
-  // the text, or its row (from 1) in a checkpoint's binary rows.
+  // the text, or its row (from 1) in a checkpoint's binary rows (read in place).
   std::vector<double> rows;
   std::vector<int> lines;
+  const double* data = nullptr;
+  std::size_t nRows = 0;
   if (t.bondRows) {
-    rows = *t.bondRows;
-    if (rows.size() % width != 0)
+    if (t.bondRows->size() % width != 0)
       throw InputError(bpath, 0,
-                       "damaged: " + std::to_string(rows.size()) + " numbers, not rows of " +
+                       "damaged: " + std::to_string(t.bondRows->size()) + " numbers, not rows of " +
                            std::to_string(width));
-    lines.resize(rows.size() / width);
-    for (std::size_t r = 0; r < lines.size(); ++r) lines[r] = static_cast<int>(r + 1);
+    data = t.bondRows->data();
+    nRows = t.bondRows->size() / width;
   } else {
     const std::string first = t.bonds->substr(0, t.bonds->find('\n'));
     const std::string tag = "# pdq bonds: step " + std::to_string(step);
@@ -394,57 +395,99 @@ RestartState parseRestart(const RestartTexts& t, const RestartNames& names, Prob
       rows.insert(rows.end(), r.values.begin(), r.values.end());
       lines.push_back(r.line);
     }
+    data = rows.data();
+    nRows = lines.size();
   }
-  auto id = [&](double v, int line, const char* what) {
+  auto lineOf = [&](std::size_t r) { return lines.empty() ? static_cast<int>(r + 1) : lines[r]; };
+  // The particle (its index in the problem) of an ID.
+  auto particle = [&](double v, int line, const char* what) {
     const Gid g = static_cast<Gid>(v);
-    if (static_cast<double>(g) != v || !index.count(g))
+    const auto it = static_cast<double>(g) == v ? index.find(g) : index.end();
+    if (it == index.end())
       throw InputError(
           bpath, line,
           std::string(what) + " " + numberText(v) + " is not a particle of the problem");
-    return g;
+    return it->second;
   };
-  struct Key {
-    Gid owner, partner;
+  // The bonds grouped by owner (a counting sort), each owner's by partner ID then line: a
+  // bond listed twice is next to itself, and its partner's own list is searched for the
+  // bond back. Of several faults, the one with the smallest owner and partner IDs is told.
+  std::vector<std::size_t> ownerOf(nRows), start(ps.size() + 1, 0);
+  struct Entry {
+    Gid partner;
     int line;
   };
-  std::vector<Key> keys;
-  keys.reserve(lines.size());
-  for (std::size_t r = 0; r < lines.size(); ++r) {
-    const double* v = &rows[r * width];
-    const int line = lines[r];
-    const Gid owner = id(v[0], line, "owner"), partner = id(v[1], line, "partner");
+  bonds.owner.reserve(nRows);
+  bonds.partner.reserve(nRows);
+  bonds.dead.reserve(nRows);
+  bonds.attrs.reserve(nRows * static_cast<std::size_t>(nB));
+  for (std::size_t r = 0; r < nRows; ++r) {
+    const double* v = data + r * width;
+    const int line = lineOf(r);
+    const std::size_t o = particle(v[0], line, "owner");
+    particle(v[1], line, "partner");
+    const Gid owner = static_cast<Gid>(v[0]), partner = static_cast<Gid>(v[1]);
     if (owner == partner)
       throw InputError(bpath, line, "particle " + std::to_string(owner) + " is bonded to itself");
     if (v[2] != 0 && v[2] != 1)
       throw InputError(bpath, line, "the dead flag is " + numberText(v[2]) + "; it must be 0 or 1");
-    keys.push_back({owner, partner, line});
+    ownerOf[r] = o;
+    ++start[o + 1];
     bonds.owner.push_back(owner);
     bonds.partner.push_back(partner);
     bonds.dead.push_back(v[2] != 0 ? 1 : 0);
     bonds.attrs.insert(bonds.attrs.end(), v + 3, v + width);
   }
-  auto before = [](const Key& a, const Key& b) {
-    return a.owner != b.owner ? a.owner < b.owner : a.partner < b.partner;
+  for (std::size_t k = 0; k < ps.size(); ++k) start[k + 1] += start[k];
+  std::vector<Entry> byOwner(nRows);
+  {
+    std::vector<std::size_t> next(start.begin(), start.end() - 1);
+    for (std::size_t r = 0; r < nRows; ++r)
+      byOwner[next[ownerOf[r]]++] = {bonds.partner[r], lineOf(r)};
+  }
+  auto before = [](const Entry& a, const Entry& b) {
+    return a.partner != b.partner ? a.partner < b.partner : a.line < b.line;
   };
-  std::sort(keys.begin(), keys.end(), [&](const Key& a, const Key& b) {
-    return before(a, b) || (!before(b, a) && a.line < b.line);
-  });
-  for (std::size_t k = 1; k < keys.size(); ++k)
-    if (!before(keys[k - 1], keys[k]))
-      throw InputError(bpath, keys[k].line,
-                       "the bond " + std::to_string(keys[k].owner) + "-" +
-                           std::to_string(keys[k].partner) + " is listed twice");
+  for (std::size_t k = 0; k < ps.size(); ++k)
+    std::sort(byOwner.begin() + start[k], byOwner.begin() + start[k + 1], before);
+  struct Fault {
+    Gid owner = 0, partner = 0;
+    int line = 0;
+    bool found = false;
+    void offer(Gid o, Gid p, int l) {
+      if (!found || o < owner || (o == owner && (p < partner || (p == partner && l < line))))
+        *this = {o, p, l, true};
+    }
+  };
+  Fault twice;
+  for (std::size_t k = 0; k < ps.size(); ++k)
+    for (std::size_t e = start[k] + 1; e < start[k + 1]; ++e)
+      if (byOwner[e].partner == byOwner[e - 1].partner)
+        twice.offer(ps.gid[k], byOwner[e].partner, byOwner[e].line);
+  if (twice.found)
+    throw InputError(bpath, twice.line,
+                     "the bond " + std::to_string(twice.owner) + "-" +
+                         std::to_string(twice.partner) + " is listed twice");
   if (bondCount >= 0 && static_cast<long>(bonds.owner.size()) != bondCount)
     throw InputError(bpath, 0,
                      "has " + std::to_string(bonds.owner.size()) + " bonds but " + spath +
                          " says " + std::to_string(bondCount) + " (cut short?)");
   // Every bond is held by both of its particles.
-  for (const Key& k : keys)
-    if (!std::binary_search(keys.begin(), keys.end(), Key{k.partner, k.owner, 0}, before))
-      throw InputError(bpath, k.line,
-                       "the bond " + std::to_string(k.owner) + "-" + std::to_string(k.partner) +
-                           " has no partner line " + std::to_string(k.partner) + " " +
-                           std::to_string(k.owner) + " (one-sided)");
+  Fault oneSided;
+  for (std::size_t k = 0; k < ps.size(); ++k)
+    for (std::size_t e = start[k]; e < start[k + 1]; ++e) {
+      const std::size_t p = index.find(byOwner[e].partner)->second;
+      if (!std::binary_search(byOwner.begin() + start[p], byOwner.begin() + start[p + 1],
+                              Entry{ps.gid[k], 0},
+                              [](const Entry& a, const Entry& b) { return a.partner < b.partner; }))
+        oneSided.offer(ps.gid[k], byOwner[e].partner, byOwner[e].line);
+    }
+  if (oneSided.found)
+    throw InputError(bpath, oneSided.line,
+                     "the bond " + std::to_string(oneSided.owner) + "-" +
+                         std::to_string(oneSided.partner) + " has no partner line " +
+                         std::to_string(oneSided.partner) + " " + std::to_string(oneSided.owner) +
+                         " (one-sided)");
   return bonds;
 }
 
