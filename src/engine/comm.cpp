@@ -16,16 +16,17 @@ namespace {
 MPI_Comm mpi(void* comm) { return static_cast<MPI_Comm>(comm); }
 
 // Calls `ready` until it returns true without holding a core while the other ranks are
-// late: polls for a short while (a message due soon arrives at once), then sleeps between
-// polls, each sleep a quarter of the time waited so far (a wake-up costs CPU time too, and
-// the wait overshoots by at most a quarter). Waiting by polling alone (MPI's own waits)
-// would burn the CPU time a late rank needs when ranks share cores, and count the wait as
-// work.
+// late: polls for up to 2 ms (the usual wait within a step, for a halo or a reduction behind
+// a slightly busier rank: a sleep there, woken late by the scheduler, slows every step of
+// ranks with cores of their own), then sleeps between polls, each sleep a quarter of the
+// time waited so far (a wake-up costs CPU time too, and the wait overshoots by at most a
+// quarter). Waiting by polling alone (MPI's own waits) would burn the CPU time a late rank
+// needs when ranks share cores, and count the wait as work.
 template <class Ready>
 void poll(Ready&& ready) {
   using Clock = std::chrono::steady_clock;
   using us = std::chrono::microseconds;
-  constexpr us kSpin(20), kShortestNap(20), kLongestNap(5000);
+  constexpr us kSpin(2000), kShortestNap(20), kLongestNap(5000);
   if (ready()) return;
   const auto start = Clock::now();
   while (Clock::now() - start < kSpin)
