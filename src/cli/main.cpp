@@ -1,6 +1,9 @@
 // The pdq command: `pdq run|prep|post|strength|info|list ...`; `pdq --help` for more.
 // Runs alone (one rank) or under mpirun; every rank parses the same command line.
+#include <omp.h>
+
 #include <cstdio>
+#include <cstdlib>
 
 #include "cli/command_line.hpp"
 #include "cli/guard.hpp"
@@ -12,6 +15,12 @@ using namespace pdq::cli;
 
 int main(int argc, char** argv) {
   pdq::MpiSession mpi(&argc, &argv, true);
+  // Threads are asked for with OMP_NUM_THREADS; OpenMP's own default, a thread per core in
+  // every rank, makes each of a step's parallel loops wait for the rank's slowest thread,
+  // and a thread without a core (ranks or other jobs sharing the cores) holds it for a time
+  // slice: small problems and relaxation's many short force evaluations spend their time
+  // waiting. The results are the same bits with any number of threads.
+  if (std::getenv("OMP_NUM_THREADS") == nullptr) omp_set_num_threads(1);
   Guard guard;
   const bool root = pdq::Comm().root();
 
