@@ -29,12 +29,15 @@ void VerletList::build(const Context& ctx, const double* pos, std::size_t stride
       // them once per cell (positions packed, owned ones sorted by index, ghosts after).
       if (i == lo || ctx.cellOf(i) != ctx.cellOf(i - 1)) {
         s.near.clear();
-        ctx.forEachNearby(i,
-                          [&](std::size_t j) { s.near.push_back(static_cast<std::uint32_t>(j)); });
-        const auto ghosts =
-            std::partition(s.near.begin(), s.near.end(), [&](std::uint32_t j) { return j < n; });
-        std::sort(s.near.begin(), ghosts);
-        s.owned = ghosts - s.near.begin();
+        s.ghost.clear();
+        ctx.forEachNearby(i, [&](std::size_t j) {
+          (j < n ? s.near : s.ghost).push_back(static_cast<std::uint32_t>(j));
+        });
+        // Owned particles are sorted by cell and the cells visited in that order, so the
+        // owned candidates come sorted by index; sort them only if not.
+        if (!std::is_sorted(s.near.begin(), s.near.end())) std::sort(s.near.begin(), s.near.end());
+        s.owned = s.near.size();
+        s.near.insert(s.near.end(), s.ghost.begin(), s.ghost.end());
         const std::size_t nc = s.near.size();
         s.xyz.resize(4 * nc);
         for (std::size_t k = 0; k < nc; ++k)

@@ -32,12 +32,13 @@ class VerletList {
   std::size_t longest() const { return longest_; }
 
  private:
-  struct Scratch {                    // one per thread
-    std::vector<std::uint32_t> out;   // the lists of the thread's particles
-    std::vector<std::uint32_t> near;  // candidates of one cell: owned by index, then ghosts
-    std::size_t owned = 0;            // owned candidates
-    std::vector<double> xyz;          // their x, y, z (one array each), then distances
-    std::vector<std::size_t> count;   // list length and owned partners, per particle
+  struct Scratch {                     // one per thread
+    std::vector<std::uint32_t> out;    // the lists of the thread's particles
+    std::vector<std::uint32_t> near;   // candidates of one cell: owned by index, then ghosts
+    std::vector<std::uint32_t> ghost;  // its ghost candidates, while gathering
+    std::size_t owned = 0;             // owned candidates
+    std::vector<double> xyz;           // their x, y, z (one array each), then distances
+    std::vector<std::size_t> count;    // list length and owned partners, per particle
   };
   std::vector<std::size_t> start_, ghost_;
   std::size_t longest_ = 0;
