@@ -12,7 +12,10 @@
 #     CPU time, the wall time per step and the halo beside the model's;
 #  4. the model's predictions for the §4.4.7 cantilever and a 10-million-particle 3D beam
 #     on 16, 64 and 256 ranks (strong scaling), and weak scaling at the cantilever's
-#     particles per rank, for the network measured here and an assumed InfiniBand.
+#     particles per rank, for the network measured here and an assumed InfiniBand;
+#  5. 1 -> 2 ranks on this machine (two_cores.sh): the efficiency of PMB, LPS and LJ
+#     256,000 atoms (median of three) beside the ceiling two cores allow (two independent
+#     1-rank runs at once against one alone).
 # Model per step on the busiest rank: T = c N_max + k_m M alpha + k_b W r beta + lambda log2 P
 # (N_max owned particles, M messages and W wall particles of one halo, r bytes per wall
 # particle, k_m and k_b all traffic over the halo's, measured on 2 ranks).
@@ -176,3 +179,7 @@ done
 echo "(comm: the share of the step that is communication; eff: strong rows against c N on one"
 echo " rank, weak rows against one rank's $n0 particles;"
 echo " the 10M beam is the cantilever's member at a finer spacing, the same particles per cell)"
+
+echo
+echo "== 5. 1 -> 2 ranks on this machine: efficiency and the two cores' ceiling =="
+bash "$src/bench/scaling/two_cores.sh" "$build" "$quick"

@@ -254,22 +254,27 @@ void ProcCube::remapBonds(long step) {
 }
 
 void ProcCube::halo() {
-  const int nA = p_.schema().nAlter();
+  const std::size_t nA = p_.schema().nAlter(), nH = p_.schema().nHalo();
   const std::uint64_t m0 = comm_.messages(), b0 = comm_.bytes();
   std::uint64_t wall = 0;
   const Domain& dom = dec_.domain();
   auto& table = p_.alterTable();
   for (const Direction& d : dirs_) {
-    sendBuf_.resize(d.send.size() * nA);
-    double* s = sendBuf_.data();
-    for (std::uint32_t i : d.send) {
-      std::copy_n(&table[std::size_t(i) * nA], nA, s);
-      if (d.wrapsOut) s[d.axis] -= d.dir * dom.length(d.axis);
-      s += nA;
-    }
+    const std::size_t nSend = d.dest >= 0 ? d.send.size() * nH : 0, nRecv = d.recvCount * nH;
+    double* s = buffer(sendBuf_, nSend);
+    if (d.dest >= 0)
+      for (std::uint32_t i : d.send) {
+        std::copy_n(&table[std::size_t(i) * nA], nH, s);
+        if (d.wrapsOut) s[d.axis] -= d.dir * dom.length(d.axis);
+        s += nH;
+      }
     if (d.dest >= 0) wall += d.send.size();
-    comm_.sendrecvKnown(sendBuf_.data(), d.dest >= 0 ? sendBuf_.size() : 0, d.dest,
-                        table.data() + d.recvFirst * nA, d.recvCount * nA, d.src, kTagHalo);
+    // Whole rows are received in place; some columns of each row through a buffer.
+    double* ghosts = table.data() + d.recvFirst * nA;
+    double* r = nH == nA ? ghosts : buffer(recvBuf_, nRecv);
+    comm_.sendrecvKnown(sendBuf_.data(), nSend, d.dest, r, nRecv, d.src, kTagHalo);
+    if (nH != nA)
+      for (std::size_t k = 0; k < d.recvCount; ++k) std::copy_n(r + k * nH, nH, ghosts + k * nA);
   }
   stats_.haloMessages = comm_.messages() - m0;
   stats_.haloBytes = comm_.bytes() - b0;
@@ -281,11 +286,12 @@ void ProcCube::refreshGhosts(std::span<double> values, int width) {
   if (values.size() < p_.local() * w)
     throw std::logic_error("refreshGhosts: the array is shorter than local particles x width");
   for (const Direction& d : dirs_) {
-    sendBuf_.resize(d.send.size() * w);
-    double* s = sendBuf_.data();
-    for (std::uint32_t i : d.send) s = std::copy_n(values.data() + i * w, w, s);
-    comm_.sendrecvKnown(sendBuf_.data(), d.dest >= 0 ? sendBuf_.size() : 0, d.dest,
-                        values.data() + d.recvFirst * w, d.recvCount * w, d.src, kTagScratch);
+    const std::size_t nSend = d.dest >= 0 ? d.send.size() * w : 0;
+    double* s = buffer(sendBuf_, nSend);
+    if (d.dest >= 0)
+      for (std::uint32_t i : d.send) s = std::copy_n(values.data() + i * w, w, s);
+    comm_.sendrecvKnown(sendBuf_.data(), nSend, d.dest, values.data() + d.recvFirst * w,
+                        d.recvCount * w, d.src, kTagScratch);
   }
 }
 
@@ -427,7 +433,13 @@ void ProcCube::migrate(long step) {
 }
 
 std::uint64_t ProcCube::haloRecordBytes() const {
-  return static_cast<std::uint64_t>(p_.schema().nAlter()) * sizeof(double);
+  return static_cast<std::uint64_t>(p_.schema().nHalo()) * sizeof(double);
+}
+
+double* ProcCube::buffer(std::vector<double>& b, std::size_t n) {
+  // Grown only: resizing down and up again would zero what is overwritten anyway.
+  if (b.size() < n) b.resize(n);
+  return b.data();
 }
 
 }  // namespace pdq

@@ -46,7 +46,7 @@ class ProcCube {
   // Shuffle (thesis §3.3.4): wraps periodic positions, migrates particles that left the
   // core, then rebuild(). Call only for models whose particles change neighbours.
   void shuffle(long step);
-  // Halo exchange of all alterable attributes.
+  // Halo exchange of the alterable attributes ghosts need (Schema::nHalo).
   void halo();
   // The same plan for a model's own array of `width` values per local particle (owned
   // first, then ghosts): the ghosts' rows get their owners' values. Nothing is shifted
@@ -94,6 +94,7 @@ class ProcCube {
   void buildCellLists();
   void migrate(long step);
   const double* binPosition(std::size_t i) const;
+  static double* buffer(std::vector<double>& b, std::size_t n);  // at least n values
 
   const Decomposition& dec_;
   Comm& comm_;
@@ -107,7 +108,7 @@ class ProcCube {
   std::vector<std::uint32_t> cellStart_, cellList_;
   std::vector<Direction> dirs_;
   std::vector<double> rebuildPos_;  // owned positions at the last rebuild
-  std::vector<double> sendBuf_;
+  std::vector<double> sendBuf_, recvBuf_;
   ExchangeStats stats_;
 };
 

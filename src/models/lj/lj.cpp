@@ -56,7 +56,9 @@ class LennardJones final : public Model {
   }
 
   Schema schema() const override {
-    return Schema::make({}, {"vx", "vy", "vz"}, {"fx", "fy", "fz"});
+    Schema s = Schema::make({}, {"vx", "vy", "vz"}, {"fx", "fy", "fz"});
+    s.haloColumns = 3;  // pairs read their ghost atoms' positions only
+    return s;
   }
   double horizon() const override { return pair_.rc; }
   double minCellSize() const override { return pair_.rc + skin_; }

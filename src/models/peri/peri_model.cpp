@@ -55,8 +55,10 @@ Schema PeriModel::schema() const {
   for (auto& a : alterExtra()) alter.push_back(a);
   std::vector<std::string> bond{"xi", "weight"};
   for (auto& b : bondExtra()) bond.push_back(b);
-  return Schema::make({"bc_x", "bc_y", "bc_z", "fx", "fy", "fz", "volume"}, alter,
-                      {"ax", "ay", "az"}, bond);
+  Schema s = Schema::make({"bc_x", "bc_y", "bc_z", "fx", "fy", "fz", "volume"}, alter,
+                          {"ax", "ay", "az"}, bond);
+  s.haloColumns = 3;  // bonds read their ghost partners' positions only
+  return s;
 }
 
 void PeriModel::setup(Context& ctx) {
