@@ -70,18 +70,62 @@ inline Interaction reversed(const Interaction& k) {
   return r;
 }
 
-// Two doubles side by side (GCC's vector extension): the co-rotational form carries the
-// axes e2 and e3 together, in the two halves of one SSE register.
-using Pair = double __attribute__((vector_size(16)));
-inline Pair swapped(Pair p) { return Pair{p[1], p[0]}; }
+// The co-rotational form's arithmetic is written once for a number type T: double, or a
+// vector of doubles (GCC's vector extension) holding several interactions, one per lane.
+// Each lane then sees the same operations in the same order as the scalar form, so the
+// same bits whatever the width.
+inline double sqrtOf(double x) { return std::sqrt(x); }
+template <class T>
+T sqrtOf(T x) {
+  for (int k = 0; k < int(sizeof(T) / sizeof(double)); ++k) x[k] = std::sqrt(x[k]);
+  return x;
+}
+// std::max's choice (a when neither is larger), lane by lane for vectors.
+inline double maxOf(double a, double b) { return std::max(a, b); }
+template <class T>
+T maxOf(T a, T b) {
+  return a < b ? b : a;
+}
 
 // The co-rotational form's current geometry: the chord's direction e1 and the interaction's
-// reference axes e2, e3 carried by each end's triad, t2 = R e2 and t3 = R e3, by component:
-// ti[c] = (t2i[c], t3i[c]).
+// reference axes e2, e3 carried by each end's triad, t2 = R e2 and t3 = R e3, by component.
+template <class T>
 struct Frame {
-  Vec e1;
-  Pair ti[3], tj[3];
+  T e1[3];
+  T t2i[3], t3i[3], t2j[3], t3j[3];
 };
+
+// Co-rotational: each end's triad carries the interaction's reference axes e2, e3 along;
+// the end's bending rotations are read against the current chord direction e1, θ̄y = t3·e1
+// and θ̄z = −t2·e1, and the twist between the ends is ½ (t3i·t2j − t2i·t3j). They are dot
+// products of rotated vectors, so rigid motions of any size leave them unchanged (no force),
+// and to first order they are the small form's θ̄ (the same stiffness at small deformation).
+// r: the chord, Ri, Rj: the particles' rotation matrices (row-major), e2, e3: the reference
+// axes. Sets the elongation da, 1/L, the end rotations ti, tj (as in Chord) and the frame.
+template <class T>
+void corotMeasures(const T r[3], const T Ri[9], const T Rj[9], const T e2[3], const T e3[3], T L0,
+                   T& da, T& invL, T ti[3], T tj[3], Frame<T>& fr) {
+  const T L = sqrtOf(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
+  invL = 1.0 / L;
+  for (int c = 0; c < 3; ++c) {
+    fr.e1[c] = r[c] * invL;
+    fr.t2i[c] = Ri[3 * c] * e2[0] + Ri[3 * c + 1] * e2[1] + Ri[3 * c + 2] * e2[2];
+    fr.t3i[c] = Ri[3 * c] * e3[0] + Ri[3 * c + 1] * e3[1] + Ri[3 * c + 2] * e3[2];
+    fr.t2j[c] = Rj[3 * c] * e2[0] + Rj[3 * c + 1] * e2[1] + Rj[3 * c + 2] * e2[2];
+    fr.t3j[c] = Rj[3 * c] * e3[0] + Rj[3 * c + 1] * e3[1] + Rj[3 * c + 2] * e3[2];
+  }
+  auto along = [&](const T* t) { return t[0] * fr.e1[0] + t[1] * fr.e1[1] + t[2] * fr.e1[2]; };
+  // t2i·t3j and t3i·t2j
+  const T x = fr.t2i[0] * fr.t3j[0] + fr.t2i[1] * fr.t3j[1] + fr.t2i[2] * fr.t3j[2];
+  const T y = fr.t3i[0] * fr.t2j[0] + fr.t3i[1] * fr.t2j[1] + fr.t3i[2] * fr.t2j[2];
+  da = L - L0;
+  ti[0] = T{};
+  ti[1] = along(fr.t3i);
+  ti[2] = -along(fr.t2i);
+  tj[0] = 0.5 * (y - x);
+  tj[1] = along(fr.t3j);
+  tj[2] = -along(fr.t2j);
+}
 
 // Deformation of the interaction in its local frame: elongation, chord length, the end
 // rotations relative to the chord in local components (θ̄x torsion, θ̄y, θ̄z bending; the
@@ -90,7 +134,7 @@ struct Frame {
 struct Chord {
   double da, invL;
   Vec ti, tj;
-  Frame frame;
+  Frame<double> frame;
   bool rotated;
 };
 
@@ -110,27 +154,65 @@ inline Chord smallChord(const Interaction& k, const Vec& d, const Vec& thi, cons
   return c;
 }
 
-// Co-rotational: each end's triad carries the interaction's reference axes e2, e3 along;
-// the end's bending rotations are read against the current chord direction e1, θ̄y = t3·e1
-// and θ̄z = −t2·e1, and the twist between the ends is ½ (t3i·t2j − t2i·t3j). They are dot
-// products of rotated vectors, so rigid motions of any size leave them unchanged (no force),
-// and to first order they are the small form's θ̄ (the same stiffness at small deformation).
-// Ri, Rj: the particles' rotation matrices.
 inline Chord corotChord(const Interaction& k, const Vec& r, const Mat& Ri, const Mat& Rj) {
-  const double L = std::sqrt(dot(r, r)), invL = 1 / L;
-  Frame fr;
-  fr.e1 = {r[0] * invL, r[1] * invL, r[2] * invL};
-  const Pair c0{k.e2[0], k.e3[0]}, c1{k.e2[1], k.e3[1]}, c2{k.e2[2], k.e3[2]};
-  for (int c = 0; c < 3; ++c) {
-    fr.ti[c] = Ri[3 * c] * c0 + Ri[3 * c + 1] * c1 + Ri[3 * c + 2] * c2;
-    fr.tj[c] = Rj[3 * c] * c0 + Rj[3 * c + 1] * c1 + Rj[3 * c + 2] * c2;
+  Chord c;
+  corotMeasures<double>(r.data(), Ri.data(), Rj.data(), k.e2.data(), k.e3.data(), k.L0, c.da,
+                        c.invL, c.ti.data(), c.tj.data(), c.frame);
+  c.rotated = true;
+  return c;
+}
+
+// ψ = √(ψx² + ψy² + ψz²) · d at the end where it is larger (eqs. 4.8–4.12): ψx d = |θ̄x_j −
+// θ̄x_i|, bending 2|2θ̄_end + θ̄_other| in each plane.
+template <class T>
+T curvature(const T ti[3], const T tj[3]) {
+  const T px = tj[0] - ti[0];
+  const T yi = 2.0 * (2.0 * ti[1] + tj[1]), zi = 2.0 * (2.0 * ti[2] + tj[2]);
+  const T yj = 2.0 * (2.0 * tj[1] + ti[1]), zj = 2.0 * (2.0 * tj[2] + ti[2]);
+  return sqrtOf(px * px + maxOf(yi * yi + zi * zi, yj * yj + zj * zj));
+}
+
+// The damage step of one interaction: from its axial strain εa (eq. 4.7), the curvature
+// term β ψ of ε_mp± (concrete) and its elongation da, the factors it keeps and its elastic
+// stretch, updating its state (ω_t, ω_c, plastic stretch; null: undamaged) when `update`.
+inline mplm::Held damageStep(const Stiffness& k, const mplm::DamageLaw& law, double epsA,
+                             double curv, double da, double L0, double* state, bool update) {
+  mplm::Held h{1, 1, da};
+  if (state && k.kind == Kind::Concrete) {
+    double omT = state[0], omC = state[1];
+    const double omega = law.update(epsA + curv, epsA - curv, omT, omC);
+    if (update) {
+      state[0] = omT;
+      state[1] = omC;
+    }
+    h.bendKeep = 1 - omega;  // eqs. 4.19, 4.20: shear, moments and torsion always
+    h.axialKeep = epsA >= 0 ? h.bendKeep : (law.crushing ? 1 - omC : 1.0);
+  } else if (state && k.kind == Kind::Bar) {
+    const double plastic = mplm::plasticStrain(epsA, state[2], k.epsY);
+    if (update) state[2] = plastic;
+    h.stretch = da - plastic * L0;
   }
-  // (t2·e1, t3·e1) at each end, and (t2i·t3j, t3i·t2j).
-  const Pair si = fr.ti[0] * fr.e1[0] + fr.ti[1] * fr.e1[1] + fr.ti[2] * fr.e1[2];
-  const Pair sj = fr.tj[0] * fr.e1[0] + fr.tj[1] * fr.e1[1] + fr.tj[2] * fr.e1[2];
-  Pair tw = fr.ti[0] * swapped(fr.tj[0]);
-  for (int c = 1; c < 3; ++c) tw += fr.ti[c] * swapped(fr.tj[c]);
-  return {L - k.L0, invL, {0, si[1], -si[0]}, {0.5 * (tw[1] - tw[0]), sj[1], -sj[0]}, fr, true};
+  return h;
+}
+
+// The element's resultants after damage: the axial force N (tension positive: pulls i
+// toward j), the torsional moment T and the end moments My, Mz of the two bending planes.
+template <class T>
+struct Resultants {
+  T N, T_, Myi, Mzi, Myj, Mzj;
+};
+template <class T>
+Resultants<T> resultants(T ka, T kb, T kt, T stretch, T axialKeep, T bendKeep, const T ti[3],
+                         const T tj[3]) {
+  Resultants<T> r;
+  r.N = ka * stretch * axialKeep;
+  const T b = kb * bendKeep;
+  r.Myi = b * (4.0 * ti[1] + 2.0 * tj[1]);
+  r.Myj = b * (2.0 * ti[1] + 4.0 * tj[1]);
+  r.Mzi = b * (4.0 * ti[2] + 2.0 * tj[2]);
+  r.Mzj = b * (2.0 * ti[2] + 4.0 * tj[2]);
+  r.T_ = kt * bendKeep * (tj[0] - ti[0]);
+  return r;
 }
 
 // The force and moments of the co-rotational form, exactly minus the gradient of the
@@ -139,32 +221,29 @@ inline Chord corotChord(const Interaction& k, const Vec& r, const Mat& Ri, const
 //   force on i  N e1 + (v − (v·e1) e1)/L,  v = My_i t3i − Mz_i t2i + My_j t3j − Mz_j t2j,
 //   moment on i e1 × (My_i t3i − Mz_i t2i) − T w,   on j  e1 × (My_j t3j − Mz_j t2j) + T w,
 // w = ½ (t3i × t2j − t2i × t3j); the force on j is minus that on i.
-inline void corotLoad(const Frame& fr, double invL, double N, double T, double Myi, double Mzi,
-                      double Myj, double Mzj, Vec& f, Vec& m, Vec* mj) {
-  const Vec& e1 = fr.e1;
-  const Pair Mi{-Mzi, Myi}, Mj{-Mzj, Myj};
-  Vec bi, bj, v, w;
+template <class T>
+void corotLoad(const Frame<T>& fr, T invL, const Resultants<T>& q, T f[3], T m[3], T* mj) {
+  const T* e1 = fr.e1;
+  T bi[3], bj[3], v[3], w[3];
   for (int c = 0; c < 3; ++c) {
-    const Pair pi = fr.ti[c] * Mi, pj = fr.tj[c] * Mj;
-    bi[c] = pi[0] + pi[1];
-    bj[c] = pj[0] + pj[1];
+    bi[c] = fr.t2i[c] * -q.Mzi + fr.t3i[c] * q.Myi;
+    bj[c] = fr.t2j[c] * -q.Mzj + fr.t3j[c] * q.Myj;
     v[c] = bi[c] + bj[c];
   }
   for (int c = 0; c < 3; ++c) {
     const int c1 = (c + 1) % 3, c2 = (c + 2) % 3;
-    // (t2i × t3j, t3i × t2j) component c
-    const Pair x = fr.ti[c1] * swapped(fr.tj[c2]) - fr.ti[c2] * swapped(fr.tj[c1]);
-    w[c] = 0.5 * (x[1] - x[0]);
+    // (t2i × t3j)_c and (t3i × t2j)_c
+    const T x = fr.t2i[c1] * fr.t3j[c2] - fr.t2i[c2] * fr.t3j[c1];
+    const T y = fr.t3i[c1] * fr.t2j[c2] - fr.t3i[c2] * fr.t2j[c1];
+    w[c] = 0.5 * (y - x);
   }
-  const Vec ci = cross(e1, bi);
-  const double along = dot(v, e1);
+  const T along = v[0] * e1[0] + v[1] * e1[1] + v[2] * e1[2];
   for (int d = 0; d < 3; ++d) {
-    f[d] = N * e1[d] + (v[d] - along * e1[d]) * invL;
-    m[d] = ci[d] - T * w[d];
+    const int d1 = (d + 1) % 3, d2 = (d + 2) % 3;
+    f[d] = q.N * e1[d] + (v[d] - along * e1[d]) * invL;
+    m[d] = (e1[d1] * bi[d2] - e1[d2] * bi[d1]) - q.T_ * w[d];
+    if (mj) mj[d] = (e1[d1] * bj[d2] - e1[d2] * bj[d1]) + q.T_ * w[d];
   }
-  if (!mj) return;
-  const Vec cj = cross(e1, bj);
-  for (int d = 0; d < 3; ++d) (*mj)[d] = cj[d] + T * w[d];
 }
 
 struct EndLoad {
@@ -179,52 +258,30 @@ struct EndLoad {
 inline EndLoad elasticForce(const Interaction& g, const Stiffness& k, const Chord& ch,
                             const mplm::DamageLaw& law, double* state, bool update,
                             Vec* mj = nullptr) {
-  const Vec& ti = ch.ti;
-  const Vec& tj = ch.tj;
+  const double* ti = ch.ti.data();
+  const double* tj = ch.tj.data();
   const double epsA = ch.da * g.invL0;  // eq. 4.7
-  double axialKeep = 1, bendKeep = 1, stretch = ch.da;
-  if (state && k.kind == Kind::Concrete) {
-    // ε_mp± = ε_a ± β d ψ, ψ = √(ψx² + ψy² + ψz²) at the end where it is larger (eqs.
-    // 4.8–4.12): ψx = |θ̄x_j − θ̄x_i|/d, bending (2/d)|2θ̄_end + θ̄_other| in each plane.
-    const double px = tj[0] - ti[0];
-    const double yi = 2 * (2 * ti[1] + tj[1]), zi = 2 * (2 * ti[2] + tj[2]);
-    const double yj = 2 * (2 * tj[1] + ti[1]), zj = 2 * (2 * tj[2] + ti[2]);
-    const double psi = std::sqrt(px * px + std::max(yi * yi + zi * zi, yj * yj + zj * zj));
-    const double curv = law.beta * psi;
-    double omT = state[0], omC = state[1];
-    const double omega = law.update(epsA + curv, epsA - curv, omT, omC);
-    if (update) {
-      state[0] = omT;
-      state[1] = omC;
-    }
-    bendKeep = 1 - omega;  // eqs. 4.19, 4.20: shear, moments and torsion always
-    axialKeep = epsA >= 0 ? bendKeep : (law.crushing ? 1 - omC : 1.0);
-  } else if (state && k.kind == Kind::Bar) {
-    const double plastic = mplm::plasticStrain(epsA, state[2], k.epsY);
-    if (update) state[2] = plastic;
-    stretch = ch.da - plastic * g.L0;
-  }
-  const double N = k.ka * stretch * axialKeep;  // tension positive: pulls i toward j
-  const double kb = k.kb * bendKeep;
-  const double Myi = kb * (4 * ti[1] + 2 * tj[1]), Myj = kb * (2 * ti[1] + 4 * tj[1]);
-  const double Mzi = kb * (4 * ti[2] + 2 * tj[2]), Mzj = kb * (2 * ti[2] + 4 * tj[2]);
-  const double T = k.kt * bendKeep * (tj[0] - ti[0]);
-  const Vec& e2 = g.e2;
-  const Vec& e3 = g.e3;
+  const double curv =
+      state && k.kind == Kind::Concrete ? law.beta * curvature<double>(ti, tj) : 0.0;
+  const mplm::Held h = damageStep(k, law, epsA, curv, ch.da, g.L0, state, update);
+  const Resultants<double> q =
+      resultants<double>(k.ka, k.kb, k.kt, h.stretch, h.axialKeep, h.bendKeep, ti, tj);
   Vec f, m;
   if (ch.rotated) {
-    corotLoad(ch.frame, ch.invL, N, T, Myi, Mzi, Myj, Mzj, f, m, mj);
-    return {f, m, axialKeep};
+    corotLoad<double>(ch.frame, ch.invL, q, f.data(), m.data(), mj ? mj->data() : nullptr);
+    return {f, m, h.axialKeep};
   }
   // Local components on i: force (N, −(Mz_i+Mz_j)/L, (My_i+My_j)/L), moment (T, −My_i, −Mz_i).
-  const double f2 = -(Mzi + Mzj) * ch.invL, f3 = (Myi + Myj) * ch.invL;
+  const Vec& e2 = g.e2;
+  const Vec& e3 = g.e3;
+  const double f2 = -(q.Mzi + q.Mzj) * ch.invL, f3 = (q.Myi + q.Myj) * ch.invL;
   for (int d = 0; d < 3; ++d) {
-    f[d] = N * g.n0[d] + f2 * e2[d] + f3 * e3[d];
-    m[d] = T * g.n0[d] - Myi * e2[d] - Mzi * e3[d];
+    f[d] = q.N * g.n0[d] + f2 * e2[d] + f3 * e3[d];
+    m[d] = q.T_ * g.n0[d] - q.Myi * e2[d] - q.Mzi * e3[d];
   }
   if (mj)
-    for (int d = 0; d < 3; ++d) (*mj)[d] = -T * g.n0[d] - Myj * e2[d] - Mzj * e3[d];
-  return {f, m, axialKeep};
+    for (int d = 0; d < 3; ++d) (*mj)[d] = -q.T_ * g.n0[d] - q.Myj * e2[d] - q.Mzj * e3[d];
+  return {f, m, h.axialKeep};
 }
 
 // The strain energy of the interaction at the damage and plastic stretch held in `state`

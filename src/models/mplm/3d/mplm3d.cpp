@@ -5,6 +5,10 @@
 // the laws of §4.3.2 shared with the 2D model, damped by eq. 4.21, reinforced by steel bars,
 // and moved by the engine's integrator (velocity Verlet; the orientation a unit quaternion,
 // Rotation::Spatial; loads and prescribed values follow the engine's load protocol).
+// The force loop's vectors of four doubles (interaction.hpp) are passed and returned only
+// within this file (inlined), never across a library interface: GCC's note that their ABI
+// differs with and without AVX does not concern them.
+#pragma GCC diagnostic ignored "-Wpsabi"
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -110,11 +114,17 @@ class Mplm3d final : public Model {
       recvStart_[i + 1] = recvStart_[i] + static_cast<std::uint32_t>(b - B.begin(i));
     }
     geoOf_.resize(B.count());
-    target_.assign(B.count(), 0);
+    evalStart_.assign(n + 1, 0);
+    evals_.clear();
     geo_.clear();
     types_.clear();
     std::map<Stiffness, std::uint32_t> typeOf;
     std::map<Interaction, std::uint32_t> geoIndex;
+    auto indexOf = [&](const Interaction& k) {
+      const auto [g, fresh] = geoIndex.try_emplace(k, static_cast<std::uint32_t>(geo_.size()));
+      if (fresh) geo_.push_back(k);
+      return g->second;
+    };
     const std::vector<double> surface = surfaceFactors(ctx);
     // Gershgorin bound of the largest eigenvalue of M⁻¹C, C the damping of eq. 4.21.
     double gamma = 0;
@@ -128,19 +138,25 @@ class Mplm3d final : public Model {
         const auto [it, added] = typeOf.try_emplace(t, static_cast<std::uint32_t>(types_.size()));
         if (added) types_.push_back(t);
         k.type = it->second;
-        const auto [g, fresh] = geoIndex.try_emplace(k, static_cast<std::uint32_t>(geo_.size()));
-        if (fresh) geo_.push_back(k);
-        geoOf_[b] = g->second;
-        // Where this end puts the partner's share when it evaluates the interaction: the
-        // owned partner's record, or (a ghost partner of smaller ID) its own.
-        if (P.gid(i) < B.partnerGid(b) && j < n)
-          target_[b] =
-              recvStart_[j] + static_cast<std::uint32_t>(reverse(B, j, P.gid(i)) - B.begin(j));
-        else if (j >= n && B.partnerGid(b) < P.gid(i))
-          target_[b] = recvStart_[i] + static_cast<std::uint32_t>(b - B.begin(i));
+        geoOf_[b] = indexOf(k);
+        // Evaluated here when i has the smaller ID (the partner's share goes to the owned
+        // partner's record, or nowhere for a ghost, whose owner has it from its own
+        // evaluation) or the partner is a ghost of smaller ID (from the ghost's end, its
+        // share to i's own record).
+        const bool first = P.gid(i) < B.partnerGid(b);
+        if (first && j < n)
+          evals_.push_back(
+              {static_cast<std::uint32_t>(b), geoOf_[b],
+               recvStart_[j] + static_cast<std::uint32_t>(reverse(B, j, P.gid(i)) - B.begin(j))});
+        else if (first)
+          evals_.push_back({static_cast<std::uint32_t>(b), geoOf_[b], noRecord});
+        else if (j >= n)
+          evals_.push_back({static_cast<std::uint32_t>(b), indexOf(reversed(k)),
+                            recvStart_[i] + static_cast<std::uint32_t>(b - B.begin(i))});
         gt += 2 * t.c;
         gr += 2 * t.cr;
       }
+      evalStart_[i + 1] = static_cast<std::uint32_t>(evals_.size());
       gamma = std::max({gamma, gt / in_.mass[i], gr / in_.inertia[i]});
     }
     omegaMax_ = highestFrequency(ctx);
@@ -172,41 +188,43 @@ class Mplm3d final : public Model {
   }
 
  private:
+  // Particles per block of the force loop: their evaluations' loads are computed together
+  // (several interactions at a time in the co-rotational form), then summed in bond order.
+  static constexpr long blockParticles = 16;
+
   template <bool Corot>
-  [[gnu::flatten]] void evaluate(Particles& P, Bonds& B) {
+  void evaluate(Particles& P, Bonds& B) {
     const long n = static_cast<long>(P.owned());
     recv_.resize(recvStart_.empty() ? 0 : recvStart_.back());
-#pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) {
-      const Gid gi = P.gid(i);
-      Vec f{}, m{};
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
-        const auto j = static_cast<std::size_t>(B.partner(b));
-        const bool first = gi < B.partnerGid(b), ghost = j >= static_cast<std::size_t>(n);
-        if (!first && !ghost) continue;  // evaluated from j
-        const Interaction& k = geo_[geoOf_[b]];
-        if (first) {
-          const Loads l = loads<Corot>(P, k, static_cast<std::size_t>(i), j, B.attr(b));
-          for (int d = 0; d < 3; ++d) {
-            f[d] += l.f[d];
-            m[d] += l.mi[d];
+#pragma omp parallel
+    {
+      std::vector<Lane> lanes;
+#pragma omp for schedule(static)
+      for (long i0 = 0; i0 < n; i0 += blockParticles) {
+        const long i1 = std::min(n, i0 + blockParticles);
+        lanes.clear();
+        for (long i = i0; i < i1; ++i) {
+          double* F = P.integ(i);
+          for (int d = 0; d < 3; ++d) F[FORCE_X + d] = F[MOMENT_X + d] = 0;
+          for (std::size_t e = evalStart_[i]; e < evalStart_[i + 1]; ++e) {
+            const Eval& v = evals_[e];
+            const auto j = static_cast<std::uint32_t>(B.partner(v.bond));
+            const auto self = static_cast<std::uint32_t>(i);
+            Received* rec = v.target == noRecord ? nullptr : &recv_[v.target];
+            if (P.gid(i) < B.partnerGid(v.bond))
+              lanes.push_back({self, j, v.geo, B.attr(v.bond), F, rec,
+                               rec ? B.attr(B.begin(j) + (v.target - recvStart_[j])) : nullptr});
+            else
+              lanes.push_back({j, self, v.geo, B.attr(v.bond), nullptr, rec, nullptr});
           }
-          if (!ghost) {
-            recv_[target_[b]] = {{-l.f[0], -l.f[1], -l.f[2]}, l.mj};
-            const std::size_t r = B.begin(j) + (target_[b] - recvStart_[j]);
-            const double* s = B.attr(b);
-            double* t = B.attr(r);
-            for (int q = 0; q < N_BOND; ++q) t[q] = s[q];
-          }
-        } else {
-          const Loads l = loads<Corot>(P, reversed(k), j, static_cast<std::size_t>(i), B.attr(b));
-          recv_[target_[b]] = {{-l.f[0], -l.f[1], -l.f[2]}, l.mj};
         }
-      }
-      double* F = P.integ(i);
-      for (int d = 0; d < 3; ++d) {
-        F[FORCE_X + d] = f[d];
-        F[MOMENT_X + d] = m[d];
+        if constexpr (Corot)
+          corotLoads(P, lanes.data(), lanes.size());
+        else
+          for (const Lane& l : lanes) {
+            const Loads q = smallLoads(P, geo_[l.geo], l.lo, l.hi, l.state);
+            deliver(l, q.f.data(), q.mi.data(), q.mj.data());
+          }
       }
     }
 #pragma omp parallel for schedule(static)
@@ -437,22 +455,128 @@ class Mplm3d final : public Model {
   struct Loads {
     Vec f, mi, mj;
   };
-  template <bool Corot>
-  Loads loads(const Particles& P, const Interaction& k, std::size_t i, std::size_t j,
-              double* state) const {
+  // A load received from a partner of smaller ID.
+  struct Received {
+    Vec f, m;
+  };
+  // Adds eq. 4.21's damping (c, cr: after damage) from the ends' velocities and angular
+  // velocities (rows of alterable attributes) to the elastic loads f, mi, mj.
+  template <class T, class RowI, class RowJ>
+  static void damp(T c, T cr, const RowI& ai, const RowJ& aj, T f[3], T mi[3], T mj[3]) {
+    for (int d = 0; d < 3; ++d) {
+      const T dw = cr * (aj(WX + d) - ai(WX + d));
+      f[d] = f[d] + c * (aj(VX + d) - ai(VX + d));
+      mi[d] = mi[d] + dw;
+      mj[d] = mj[d] - dw;
+    }
+  }
+  // The small form's loads of interaction k (as i holds it) on both ends with damping after
+  // damage, updating its state: the force on i (j's is its opposite) and the two moments.
+  Loads smallLoads(const Particles& P, const Interaction& k, std::size_t i, std::size_t j,
+                   double* state) const {
     const Stiffness& t = types_[k.type];
     Loads l;
-    const EndLoad e = elasticForce(k, t, chordOf<Corot>(P, k, i, j), par_.law, state, true, &l.mj);
-    const double c = e.keep * t.c, cr = e.keep * t.cr;
+    EndLoad e = elasticForce(k, t, chordOf<false>(P, k, i, j), par_.law, state, true, &l.mj);
     const double *a = P.alter(i), *aj = P.alter(j);
-    for (int d = 0; d < 3; ++d) {
-      const double dw = cr * (aj[WX + d] - a[WX + d]);
-      l.f[d] = e.f[d] + c * (aj[VX + d] - a[VX + d]);
-      l.mi[d] = e.m[d] + dw;
-      l.mj[d] -= dw;
-    }
+    damp<double>(
+        e.keep * t.c, e.keep * t.cr, [&](int q) { return a[q]; }, [&](int q) { return aj[q]; },
+        e.f.data(), e.m.data(), l.mj.data());
+    l.f = e.f;
+    l.mi = e.m;
     return l;
   }
+
+  // One evaluation of an interaction: from particle lo to hi (lo has the smaller ID), its
+  // geometry as lo holds it, its state, and where its loads go: lo's force and moment
+  // (an owned lo), the record of hi's share (none for a ghost hi) and hi's copy of the state
+  // (an owned hi).
+  struct Lane {
+    std::uint32_t lo, hi, geo;
+    double* state;
+    double* sum;
+    Received* rec;
+    double* copy;
+  };
+  // Takes an evaluation's loads to their particles, in the order of the lanes: lo's sums
+  // are added to in its bond order.
+  static void deliver(const Lane& l, const double* f, const double* mi, const double* mj) {
+    if (l.sum)
+      for (int d = 0; d < 3; ++d) {
+        l.sum[FORCE_X + d] += f[d];
+        l.sum[MOMENT_X + d] += mi[d];
+      }
+    if (l.rec) *l.rec = {{-f[0], -f[1], -f[2]}, {mj[0], mj[1], mj[2]}};
+    if (l.copy) std::copy_n(l.state, N_BOND, l.copy);
+  }
+  // Interactions evaluated side by side, one per lane: lane-wise the scalar form's operations
+  // in the same order (interaction.hpp), so the same bits.
+  using Wide = double __attribute__((vector_size(4 * sizeof(double))));
+  static constexpr int width = 4;
+
+  // The co-rotational loads of `count` evaluations, `width` at a time, delivered; with AVX2 where
+  // the processor has it (no FMA: the same roundings as without).
+  [[gnu::flatten, gnu::target_clones("avx2", "default")]] void corotLoads(const Particles& P,
+                                                                          const Lane* lanes,
+                                                                          std::size_t count) const {
+    for (std::size_t s = 0; s < count; s += width) {
+      const Lane* ln[width];
+      const double *ai[width], *aj[width], *Ri[width], *Rj[width];
+      const Interaction* g[width];
+      const Stiffness* t[width];
+      for (int k = 0; k < width; ++k) {
+        ln[k] = &lanes[std::min(s + k, count - 1)];  // the last one again past the end
+        ai[k] = P.alter(ln[k]->lo);
+        aj[k] = P.alter(ln[k]->hi);
+        Ri[k] = rot_[ln[k]->lo].data();
+        Rj[k] = rot_[ln[k]->hi].data();
+        g[k] = &geo_[ln[k]->geo];
+        t[k] = &types_[g[k]->type];
+      }
+      auto wide = [](auto get) { return Wide{get(0), get(1), get(2), get(3)}; };
+      Wide r[3], e2[3], e3[3], RiW[9], RjW[9];
+      for (int c = 0; c < 3; ++c) {
+        r[c] = wide([&](int k) { return aj[k][AX + c] - ai[k][AX + c]; });
+        e2[c] = wide([&](int k) { return g[k]->e2[c]; });
+        e3[c] = wide([&](int k) { return g[k]->e3[c]; });
+      }
+      for (int c = 0; c < 9; ++c) {
+        RiW[c] = wide([&](int k) { return Ri[k][c]; });
+        RjW[c] = wide([&](int k) { return Rj[k][c]; });
+      }
+      const Wide L0 = wide([&](int k) { return g[k]->L0; });
+      const Wide invL0 = wide([&](int k) { return g[k]->invL0; });
+      Wide da, invL, ti[3], tj[3];
+      Frame<Wide> fr;
+      corotMeasures<Wide>(r, RiW, RjW, e2, e3, L0, da, invL, ti, tj, fr);
+      const Wide epsA = da * invL0;  // eq. 4.7
+      const Wide curv = par_.law.beta * curvature<Wide>(ti, tj);
+      Wide axialKeep, bendKeep, stretch;
+      for (int k = 0; k < width; ++k) {
+        const mplm::Held h = damageStep(*t[k], par_.law, epsA[k], curv[k], da[k], g[k]->L0,
+                                        ln[k]->state, s + k < count);
+        axialKeep[k] = h.axialKeep;
+        bendKeep[k] = h.bendKeep;
+        stretch[k] = h.stretch;
+      }
+      const Resultants<Wide> q = resultants<Wide>(
+          wide([&](int k) { return t[k]->ka; }), wide([&](int k) { return t[k]->kb; }),
+          wide([&](int k) { return t[k]->kt; }), stretch, axialKeep, bendKeep, ti, tj);
+      Wide f[3], mi[3], mj[3];
+      corotLoad<Wide>(fr, invL, q, f, mi, mj);
+      damp<Wide>(
+          axialKeep * wide([&](int k) { return t[k]->c; }),
+          axialKeep * wide([&](int k) { return t[k]->cr; }),
+          [&](int col) { return wide([&](int k) { return ai[k][col]; }); },
+          [&](int col) { return wide([&](int k) { return aj[k][col]; }); }, f, mi, mj);
+      for (int k = 0; k < width && s + k < count; ++k) {
+        const double fk[3] = {f[0][k], f[1][k], f[2][k]};
+        const double mik[3] = {mi[0][k], mi[1][k], mi[2][k]};
+        const double mjk[3] = {mj[0][k], mj[1][k], mj[2][k]};
+        deliver(*ln[k], fk, mik, mjk);
+      }
+    }
+  }
+
   // The bond of owned particle j whose partner is gid (bonds are sorted by partner ID).
   static std::size_t reverse(const Bonds& B, std::size_t j, Gid gid) {
     std::size_t lo = B.begin(j), hi = B.end(j);
@@ -620,14 +744,18 @@ class Mplm3d final : public Model {
   std::vector<Interaction> geo_;      // the distinct geometries of the interaction ends
   std::vector<Stiffness> types_;      // the distinct constants of the interactions
   std::vector<std::uint32_t> geoOf_;  // per bond (same index as ctx.bonds): its geometry
-  // Per bond whose particle evaluates it: the record that receives the partner's share.
-  std::vector<std::uint32_t> target_;
+  // The interactions a particle evaluates, evals_[evalStart_[i]] to evals_[evalStart_[i + 1]]
+  // in bond order: its bond, the geometry as the end of smaller ID holds it, and the record
+  // that receives the share of the end of larger ID (noRecord: a ghost's).
+  struct Eval {
+    std::uint32_t bond, geo, target;
+  };
+  static constexpr std::uint32_t noRecord = std::numeric_limits<std::uint32_t>::max();
+  std::vector<Eval> evals_;
+  std::vector<std::uint32_t> evalStart_;
   // Per owned particle: its records of loads from partners of smaller ID, from
   // recvStart_[i] to recvStart_[i + 1], in bond order.
   std::vector<std::uint32_t> recvStart_;
-  struct Received {
-    Vec f, m;
-  };
   std::vector<Received> recv_;
   mutable std::vector<Mat> rot_;  // rotation matrix per local particle (co-rotational form)
   mutable std::vector<Vec> th_;   // rotation vector per local particle (small form)
