@@ -29,8 +29,8 @@ aci318::Section section(const BeamSpec& b, const Parameters& par) {
   aci318::Section sec;
   sec.b = b.thickness;
   sec.h = b.depth;
-  sec.d = b.depth - b.barCentroid;
-  sec.As = b.barDiameter > 0 ? barArea(b.barDiameter) : 0;
+  sec.d = b.depth - barCentroid(b);
+  sec.As = barArea(b);
   sec.fc = m.fc;
   sec.fy = sec.fyt = m.fy;
   sec.Es = m.Es;
@@ -62,7 +62,7 @@ Reference beamReference(const Params& generator, const Params& model) {
   r.unitLoad = b.lineLoad / 1e3;
   if (b.supports == "none") return r;
   const Parameters par = parameters(model);
-  if (b.barDiameter > 0) {
+  if (!b.bars.empty()) {
     const aci318::Capacity c = aci318::simplySupportedUniform(section(b, par), b.span);
     r.value = c.governing() / 1e3;
     r.label = "ACI 318";

@@ -43,7 +43,7 @@ inline ParticleSet smallBeam() {
   BeamSpec b;
   b.span = 0.4;
   b.depth = 0.1;
-  b.barDiameter = 0.01;
+  b.bars = {{.diameter = 0.01}};
   b.stirrupDiameter = 0.006;
   b.stirrupFirst = 0.04;
   b.stirrupSpacing = 0.1;

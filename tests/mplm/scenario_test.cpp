@@ -7,10 +7,13 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
+#include <numbers>
 #include <tuple>
 #include <vector>
 
@@ -213,6 +216,55 @@ line_load = 0
       EXPECT_NE(std::string(e.what()).find("bad.toml:5:"), std::string::npos) << e.what();
       EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
     }
+  }
+}
+
+// mplm_beam's bar layers: bar_diameter, bar_centroid and bar_count as arrays give one line
+// of steel particles per layer at its height, carrying the summed area and second moment
+// of its bars; arrays of different lengths are refused at their line.
+TEST(MplmScenarios, BeamWithBarLayers) {
+  const std::string text = R"(steps = 1
+[model]
+name = "mplm2d"
+[particles]
+generator = "mplm_beam"
+span = 0.4
+depth = 0.2
+bar_diameter = [0.02, 0.01]
+bar_centroid = [0.03, 0.07]
+bar_count = [2, 3]
+)";
+  Scenario sc = scenarioFrom("mplm_bar_layers/two.toml", text);
+  const ParticleSet& ps = sc.problem.particles;
+  std::map<int, std::vector<const double*>> bars;
+  for (std::size_t k = 0; k < ps.size(); ++k)
+    if (isSteel(ps.fixedRow(k)))
+      bars[static_cast<int>(ps.fixedRow(k)[BAR])].push_back(ps.fixedRow(k));
+  ASSERT_EQ(bars.size(), 2u);
+  const double pi = std::numbers::pi;
+  const std::array<std::array<double, 3>, 2> expected = {
+      {{0.03, 2 * pi * 0.02 * 0.02 / 4, 2 * pi * std::pow(0.02, 4) / 64},
+       {0.07, 3 * pi * 0.01 * 0.01 / 4, 3 * pi * std::pow(0.01, 4) / 64}}};
+  int layer = 0;
+  for (const auto& [id, row] : bars) {
+    EXPECT_EQ(row.size(), 21u);  // 0.4 m at s = 0.02, both ends
+    for (const double* f : row) {
+      EXPECT_DOUBLE_EQ(f[1], expected[layer][0]);
+      EXPECT_DOUBLE_EQ(f[AREA], expected[layer][1]);
+      EXPECT_DOUBLE_EQ(f[SECOND_MOMENT], expected[layer][2]);
+    }
+    ++layer;
+  }
+  std::string bad = text;
+  bad.replace(bad.find("bar_count = [2, 3]"), 18, "bar_count = [2, 3, 1]");
+  try {
+    scenarioFrom("mplm_bar_layers/bad.toml", bad);
+    ADD_FAILURE() << "three counts for two layers were accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("bad.toml:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bar_diameter has 2 values where another bar_ key has 3"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -18,6 +18,7 @@
 #include "prep/hexagonal.hpp"
 #include "prep/lattice.hpp"
 #include "prep/mplm/specimen.hpp"
+#include "prep/rebar.hpp"
 
 namespace pdq::mplm {
 
@@ -44,6 +45,15 @@ ParticleSet plate(const PlateSpec& spec) {
   return ps;
 }
 
+namespace {
+// Stirrups stand on the lowest bar layer (without bars: at its default height).
+double stirrupFoot(const BeamSpec& b) {
+  double y = b.bars.empty() ? BeamSpec::BarLayer{}.centroid : b.bars.front().centroid;
+  for (const auto& layer : b.bars) y = std::min(y, layer.centroid);
+  return y;
+}
+}  // namespace
+
 ParticleSet beam(const BeamSpec& b) {
   const double s = b.spacing, tol = 1e-6 * s;
   const double length = b.span + 2 * b.overhang, mid = length / 2;
@@ -61,12 +71,13 @@ ParticleSet beam(const BeamSpec& b) {
   ParticleSet ps = newParticleSet();
   addConcrete(ps, points);
   int barId = 1;
-  if (b.barDiameter > 0)
-    addBar(ps, prep::longitudinalBar(0, length, 0, b.barCentroid, b.barDiameter), s, barId++);
+  for (const auto& layer : b.bars)
+    addBar(ps, prep::longitudinalBar(0, length, 0, layer.centroid, layer.diameter), s, barId++,
+           layer.count);
   if (b.stirrupDiameter > 0)
     for (const auto& st : prep::stirrups(
              b.stirrupFirst, b.stirrupSpacing, length - b.stirrupFirst + b.stirrupSpacing / 2,
-             b.barCentroid, b.depth - b.stirrupCover, b.stirrupDiameter))
+             stirrupFoot(b), b.depth - b.stirrupCover, b.stirrupDiameter))
       addBar(ps, st, s, barId++);
   const double yTop = maxCoord(ps, 1);
   auto concreteAt = [&](double x, double y) {
@@ -217,11 +228,11 @@ SizeEstimate beamSize(const Params& p, const Params& model) {
   SizeEstimate e = hexagonalSize(length, b.depth, s, prep::HexOrientation::BondsAlongX);
   // The notch leaves out about its area's share of the lattice (s (sqrt(3)/2) s a site).
   if (b.notchDepth > 0) e.particles -= b.notchDepth * b.notchWidth / (s * prep::hexPitch(s));
-  if (b.barDiameter > 0) e.extraParticles += std::ceil(length / s) + 1;
+  e.extraParticles += b.bars.size() * (std::ceil(length / s) + 1);
   if (b.stirrupDiameter > 0)
     e.extraParticles += prep::latticeSteps(length - b.stirrupFirst + b.stirrupSpacing / 2,
                                            b.stirrupFirst, b.stirrupSpacing) *
-                        (std::ceil((b.depth - b.stirrupCover - b.barCentroid) / s) + 1);
+                        (std::ceil((b.depth - b.stirrupCover - stirrupFoot(b)) / s) + 1);
   const double plateSites = b.loadPlates.size() * (b.plateWidth / s + 1) +
                             (b.bearingPlates ? 2 * (b.supportWidth / s + 1) : 0);
   e.extraParticles += plateSites;
@@ -264,6 +275,70 @@ PlateSpec plateSpec(const Params& p, const Params& model) {
   return s;
 }
 
+namespace {
+
+// bar_diameter, bar_centroid, bar_count: a number each (one layer) or lists of one length.
+std::vector<BeamSpec::BarLayer> barLayers(const Params& p, double depth) {
+  if (!p.has("bar_diameter")) {
+    for (const char* key : {"bar_centroid", "bar_count"})
+      if (const auto v = p.raw(key))
+        throw InputError(v->file, v->line, std::string(key) + " without bar_diameter");
+    return {};
+  }
+  auto list = [&](const char* key, double fallback) {
+    return p.has(key) ? p.numbers(key) : std::vector<double>{fallback};
+  };
+  const auto d = list("bar_diameter", 0), y = list("bar_centroid", BeamSpec::BarLayer{}.centroid),
+             n = list("bar_count", 1);
+  const std::size_t layers = std::max({d.size(), y.size(), n.size()});
+  std::vector<BeamSpec::BarLayer> bars;
+  for (std::size_t k = 0; k < layers; ++k) {
+    auto item = [&](const std::vector<double>& v, const char* key, double lo, double hi) {
+      const auto raw = p.raw(key);
+      const std::string where = raw ? raw->file : p.owner();
+      const int line = raw ? raw->line : 0;
+      if (v.size() != 1 && v.size() != layers)
+        throw InputError(where, line,
+                         std::string(key) + " has " + std::to_string(v.size()) +
+                             " values where another bar_ key has " + std::to_string(layers) +
+                             ": give one value, or one per bar layer");
+      const double x = v[v.size() == 1 ? 0 : k];
+      if (!(x >= lo && x <= hi))
+        throw InputError(where, line,
+                         std::string(key) + " = " + numberText(x) + " is outside [" +
+                             numberText(lo) + ", " + numberText(hi) + "]");
+      return x;
+    };
+    BeamSpec::BarLayer layer;
+    layer.diameter = item(d, "bar_diameter", 0, big);
+    layer.centroid = item(y, "bar_centroid", 0, depth);
+    const double count = item(n, "bar_count", 1, 1e6);
+    if (count != std::floor(count)) {
+      const auto raw = p.raw("bar_count");
+      throw InputError(raw->file, raw->line, "bar_count must be whole numbers");
+    }
+    layer.count = static_cast<int>(count);
+    if (layer.diameter > 0) bars.push_back(layer);
+  }
+  return bars;
+}
+
+}  // namespace
+
+double barArea(const BeamSpec& b) {
+  double area = 0;
+  for (const auto& layer : b.bars) area += layer.count * prep::BarSection{layer.diameter}.area();
+  return area;
+}
+
+double barCentroid(const BeamSpec& b) {
+  double moment = 0;
+  for (const auto& layer : b.bars)
+    moment += layer.count * prep::BarSection{layer.diameter}.area() * layer.centroid;
+  const double area = barArea(b);
+  return area > 0 ? moment / area : 0;
+}
+
 BeamSpec beamSpec(const Params& p, const Params& model) {
   const Parameters2d par = modelParameters(model);
   BeamSpec b;
@@ -271,8 +346,7 @@ BeamSpec beamSpec(const Params& p, const Params& model) {
   b.thickness = par.thickness;
   b.span = p.number("span", b.span, 1e-300, big);
   b.depth = p.number("depth", b.depth, 1e-300, big);
-  b.barDiameter = p.number("bar_diameter", b.barDiameter, 0.0, big);
-  b.barCentroid = p.number("bar_centroid", b.barCentroid, 0.0, b.depth);
+  b.bars = barLayers(p, b.depth);
   b.stirrupDiameter = p.number("stirrup_diameter", b.stirrupDiameter, 0.0, big);
   b.stirrupFirst = p.number("stirrup_first", b.stirrupFirst, 0.0, b.span);
   b.stirrupSpacing = p.number("stirrup_spacing", b.stirrupSpacing, 1e-300, big);
@@ -324,6 +398,8 @@ PDQ_REGISTER_GENERATOR(beamGenerator, "mplm_beam",
                        "none); notch_width its width, m (default and least: the spacing)\n"
                        "  bar_diameter      longitudinal bar, m (default 0: plain concrete)\n"
                        "  bar_centroid      its height above the bottom, m (default 0.02)\n"
+                       "  bar_count         bars side by side in it (default 1); arrays of "
+                       "the three: one bar layer per item\n"
                        "  stirrup_diameter  m (default 0: none); stirrup_first 0.04, "
                        "stirrup_spacing 0.15, stirrup_cover 0.02\n"
                        "  supports          simple, bearings or none (default simple); "

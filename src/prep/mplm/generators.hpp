@@ -42,9 +42,16 @@ struct BeamSpec {
   // within notchWidth/2 of midspan are left out (0: no notch). notchWidth must be at
   // least the spacing, or interactions would still cross the slot.
   double notchDepth = 0, notchWidth = 0.02;
-  double barDiameter = 0, barCentroid = 0.02;  // 0: plain concrete
+  // Longitudinal bar layers, each one line of steel particles along the beam for `count`
+  // equal bars of `diameter` with their centroid `centroid` above the bottom face; none:
+  // plain concrete.
+  struct BarLayer {
+    double diameter = 0, centroid = 0.02;
+    int count = 1;
+  };
+  std::vector<BarLayer> bars;
   double stirrupDiameter = 0, stirrupFirst = 0.04, stirrupSpacing = 0.15;
-  double stirrupCover = 0.02;  // stirrups run from the bar's centroid to depth − cover
+  double stirrupCover = 0.02;  // stirrups run from the lowest bar's centroid to depth − cover
   // Bottom-row particles within this distance of an end are supported (0: the corner
   // particle alone); with an overhang, those within half of it of each support's line. A single
   // particle carrying the whole reaction (8.7 kN at the plain beam's cracking load) is damaged long
@@ -75,5 +82,8 @@ ParticleSet beam(const BeamSpec& spec);
 // is out of range); `model` is the [model] table (spacing, thickness).
 PlateSpec plateSpec(const Params& generator, const Params& model);
 BeamSpec beamSpec(const Params& generator, const Params& model);
+// The bars' total area and its centroid's height above the bottom face (0, 0: none).
+double barArea(const BeamSpec& spec);
+double barCentroid(const BeamSpec& spec);
 
 }  // namespace pdq::mplm

@@ -41,8 +41,8 @@ void appendSteel(ParticleSet& ps, const std::vector<prep::Point>& points, double
 }  // namespace
 
 void addSteel(ParticleSet& ps, const std::vector<prep::Point>& points,
-              const prep::BarSection& section, int barId) {
-  appendSteel(ps, points, section.area(), section.secondMoment(), barId, 2);
+              const prep::BarSection& section, int barId, int count) {
+  appendSteel(ps, points, count * section.area(), count * section.secondMoment(), barId, 2);
 }
 
 void addPlate(ParticleSet& ps, const std::vector<prep::Point>& points, double area,
@@ -50,8 +50,8 @@ void addPlate(ParticleSet& ps, const std::vector<prep::Point>& points, double ar
   appendSteel(ps, points, area, secondMoment, barId, 1);
 }
 
-void addBar(ParticleSet& ps, const prep::Bar& bar, double s, int barId) {
-  addSteel(ps, prep::barPoints(bar, s), bar.section, barId);
+void addBar(ParticleSet& ps, const prep::Bar& bar, double s, int barId, int count) {
+  addSteel(ps, prep::barPoints(bar, s), bar.section, barId, count);
 }
 
 std::vector<std::size_t> select(const ParticleSet& ps,

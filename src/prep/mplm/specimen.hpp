@@ -17,11 +17,12 @@ ParticleSet newParticleSet();
 void addConcrete(ParticleSet& ps, const std::vector<std::array<double, 2>>& points);
 // Appends steel particles of bar `barId` at the points, of the bar's section, in the
 // widths of either dimension's set (the steel columns are shared); every other one (the
-// first included) links to concrete.
+// first included) links to concrete. `count` > 1: one line of particles for that many
+// equal bars side by side (a 2D layer): their area and second moment summed.
 void addSteel(ParticleSet& ps, const std::vector<prep::Point>& points,
-              const prep::BarSection& section, int barId);
+              const prep::BarSection& section, int barId, int count = 1);
 // A straight bar's steel particles (prep::barPoints).
-void addBar(ParticleSet& ps, const prep::Bar& bar, double s, int barId);
+void addBar(ParticleSet& ps, const prep::Bar& bar, double s, int barId, int count = 1);
 // Appends a steel plate as bar `barId` at the points: every particle bonded to the concrete
 // within one spacing, of the given section area and second moment.
 void addPlate(ParticleSet& ps, const std::vector<prep::Point>& points, double area,
