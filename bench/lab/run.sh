@@ -1,15 +1,18 @@
 #!/usr/bin/env bash
-# The laboratory tests of docs/lab-tests.md on two ranks: the notched beam run under
-# displacement control past its peak, the reinforced beams through pdq's dynamic strength
-# search; each curve drawn over the measured one into docs/lab/<test>.png with `pdq post
-# plot` (pdq's curves as numbers in docs/lab/<test>_*.csv), the damage at the peak or at
-# failure into docs/lab/<test>_peak.png or _failure.png with `pdq post picture`, and the
+# The laboratory tests of docs/lab-tests.md on two ranks, each run under displacement
+# control by the quasi-static solver past its peak; each curve drawn over the measured one
+# into docs/lab/<test>.png with `pdq post plot` (pdq's curve as numbers in
+# docs/lab/<test>_pdq.csv), the damage at the peak (and, for the reinforced beams, at the
+# end of the run) into docs/lab/<test>_peak.png (_end.png) with `pdq post picture`, and the
 # README's table of laboratory tests printed: measured peak, pdq's peak, their ratio. Runs
 # and logs stay in the work folder printed at the end.
-# Usage: bench/lab/run.sh [build-dir] [ranks]
+# Usage: bench/lab/run.sh [build-dir] [ranks] [test ...]   (tests: the scenarios' names; all by default)
 set -euo pipefail
 build=$(cd "${1:-build}" && pwd)
 ranks=${2:-2}
+shift $(($# < 2 ? $# : 2))
+tests=${*:-gregoire_notched vecchio_shim_oa1 janney_flexure}
+wanted() { [[ " $tests " == *" $1 "* ]]; }
 src=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 cd "$work"
@@ -27,7 +30,9 @@ echo "| --- | --- | --- | --- | --- |"
 # Grégoire et al. 2013, notched beam: the load against the CMOD, the opening between the
 # bottom particles 20 mm apart either side of the notch (history_ids of the scenario).
 t=gregoire_notched
-if run $t; then
+if ! wanted $t; then
+  :
+elif run $t; then
   # timehist.dat: per load step a row for each gauge particle, in ID order (left, right).
   awk '!/^#/ { if (!n || $1 != s) { n = 1; s = $1; a = $4 }
                else { d = $4 - a; if (s == 0) d0 = d; print s, (d - d0) * 1e3 } }' \
@@ -54,53 +59,44 @@ else
   echo "| Grégoire et al. 2013, notched beam | 0.933–1.114 kN | pdq run failed: see $work/$t.log |"
 fi
 
-# The reinforced beams: pdq's dynamic strength search (docs/mplm.md), its bracket the row;
-# the curve is each trial's ramp, load against midspan deflection, of the highest trial
-# that holds and the lowest that fails, drawn over the measured curve; the picture is the
-# lowest failing trial at its end.
-beam() {  # beam <test> <measured csv> <its load column> <measured peak> <unit> <title>
+# The reinforced beams: the load (quasi_static.csv: the reaction of the pushed plate
+# particles, N) × <scale> against the midspan deflection (history.csv's uy, the bottom
+# particles at midspan), per load step.
+beam() {  # beam <test> <measured csv> <its load column> <scale> <measured peak> <unit> <title>
   local t=$1
-  if ! OMP_NUM_THREADS=1 mpirun --oversubscribe --allow-run-as-root -np "$ranks" "$build/pdq" \
-    strength "$src/bench/lab/$t.toml" >"$t.log" 2>&1; then
-    echo "| $6 | $4 $5 | pdq strength failed: see $work/$t.log |"
+  wanted "$t" || return 0
+  if ! run "$t"; then
+    echo "| $7 | $5 $6 | pdq run failed: see $work/$t.log |"
     return
   fi
-  # trials.csv: trial, load, holds (1 or 0), ...: the highest holding and lowest failing trial.
-  local dir=${t}_out/strength held failed
-  read -r held failed < <(awk -F, 'NR > 1 { if ($3 == 1 && $2 > h) { h = $2; hn = $1 }
-    if ($3 == 0 && (f == "" || $2 < f)) { f = $2; fn = $1 } } END { print hn, fn }' "$dir/trials.csv")
-  if [ -z "$failed" ]; then
-    echo "| $6 | $4 $5 | no bracket: see $work/$dir/strength.txt |"
-    return
-  fi
-  local n
-  for n in "$held" "$failed"; do
-    { echo "# pdq's curve of bench/lab/$t.toml (bench/lab/run.sh): trial $n of its strength"
-      echo "# search, midspan deflection (mm) against the load ($5) as the ramp raises it"
-      echo "deflection_mm,$3"
-      awk -F, 'NR > 1 { printf "%.6g,%.6g\n", -$7 * 1e3, $3 }' "$dir/$(printf trial_%02d "$n")/history.csv"
-    } >"$src/docs/lab/${t}_trial$n.csv"
-  done
-  local lo hi
-  lo=$(awk -F, -v n="$held" '$1 == n { print $2 }' "$dir/trials.csv")
-  hi=$(awk -F, -v n="$failed" '$1 == n { print $2 }' "$dir/trials.csv")
-  "$build/pdq" post plot "$src/docs/lab/$2" "$src/docs/lab/${t}_trial$held.csv" \
-    "$src/docs/lab/${t}_trial$failed.csv" --x deflection_mm \
-    --label "measured" --label "pdq, holds at $(printf %.1f "$lo") $5" \
-    --label "pdq, fails at $(printf %.1f "$hi") $5" --xlabel "midspan deflection (mm)" \
-    --ylabel "$3" --title "$6: measured and pdq (dynamic strength trials)" \
+  { echo "# pdq's curve of bench/lab/$t.toml (bench/lab/run.sh): per load step the midspan"
+    echo "# deflection (mm, the bottom particles at midspan) and the load ($6, the reaction"
+    echo "# of the pushed particles x $4); the first row is the unloaded state."
+    echo "deflection_mm,$3"
+    awk -F, -v k="$4" 'FNR == NR { if (FNR > 1) load[$1] = $7; next }
+      FNR > 1 && !seen[$1]++ { printf "%.6g,%.6g\n", 0 - $7 * 1e3, k * ($1 in load ? load[$1] : 0) }' \
+      "${t}_out/quasi_static.csv" "${t}_out/history.csv"; } >"$src/docs/lab/${t}_pdq.csv"
+  read -r step load disp < <(peak "$t")
+  local last defl
+  last=$(awk -F, 'NR > 1 { n = $1 } END { print n }' "${t}_out/quasi_static.csv")
+  defl=$(awk -F, -v s="$step" 'NR > 1 && $1 == s { printf "%.2f", -$7 * 1e3; exit }' "${t}_out/history.csv")
+  "$build/pdq" post plot "$src/docs/lab/$2" "$src/docs/lab/${t}_pdq.csv" --x deflection_mm \
+    --label "measured" --label "pdq mplm2d, displacement control" \
+    --xlabel "midspan deflection (mm)" --ylabel "$3" --title "$7: measured and pdq" \
     -o "$src/docs/lab/$t.png" >>"$t.log"
-  local last
-  last=$(ls "$dir/$(printf trial_%02d "$failed")"/ParticleAlterAttrs.*.rst)
-  "$build/pdq" post picture "$src/bench/lab/$t.toml" --restart "$last" \
-    -o "$src/docs/lab/${t}_failure.png" \
-    --set "title=$6: tensile damage, the lowest failing trial ($(printf %.1f "$hi") $5)" >>"$t.log"
-  awk -v lo="$lo" -v hi="$hi" -v m="$4" -v u="$5" -v name="$6" -v mode="$(sed -n 's/^failure mode: //p' "$dir/strength.txt")" \
-    'BEGIN { printf "| %s | %s %s | %.1f–%.1f %s (%s) | %.2f–%.2f | docs/lab-tests.md §5 |\n", name, m, u, lo, hi, u, mode, lo / m, hi / m }'
+  local n
+  for n in "$step" "$last"; do
+    "$build/pdq" post picture "$src/bench/lab/$t.toml" --restart "${t}_out/ParticleAlterAttrs.$n.rst" \
+      -o "$src/docs/lab/${t}_$([ "$n" = "$step" ] && echo peak || echo end).png" \
+      --set "title=$7: tensile damage at load step $n$([ "$n" = "$step" ] && echo ", the peak")" >>"$t.log"
+  done
+  awk -v p="$load" -v k="$4" -v d="$defl" -v m="$5" -v u="$6" -v name="$7" \
+    'BEGIN { printf "| %s | %s %s | %.1f %s at %s mm | %.2f | docs/lab-tests.md §5 |\n", name, m, u, k * p, u, d, k * p / m }'
 }
-beam vecchio_shim_oa1 vecchio_shim2004_oa1_load_deflection.csv load_kN 332 kN \
+beam vecchio_shim_oa1 vecchio_shim2004_oa1_load_deflection.csv load_kN 1e-3 332 kN \
   "Vecchio & Shim 2004, beam OA1 (shear, no stirrups)"
-beam janney_flexure janney1956_moment_deflection.csv moment_kNm 41.5 "kN m" \
+# Janney: the two plates' reactions, each times the shear span 0.9144 m: the moment.
+beam janney_flexure janney1956_moment_deflection.csv moment_kNm 4.572e-4 41.5 "kN m" \
   "Janney et al. 1956 (flexure, four-point bending)"
 echo
 echo "runs: $work/*_out; curves and pictures: $src/docs/lab/"

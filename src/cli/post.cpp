@@ -82,6 +82,8 @@ void pictureCommand(const PictureCommandOptions& o) {
   // the one the run would have drawn at that step.
   const std::string outDir = pb.run.outDir;
   pb.run.steps = pb.run.firstStep;
+  // A quasi-static run that cut back has more load steps than `load_steps`: draw any.
+  pb.run.solver.loadSteps = std::max(pb.run.solver.loadSteps, pb.run.steps);
   pb.run.outDir.assign(1, '.');
   pb.output = {.finalRestart = false};
   const auto simulation = makeSimulation(std::move(pb), comm);
