@@ -13,6 +13,7 @@ using pdq::test::freshDir;
 using pdq::test::readFile;
 using pdq::test::runPdq;
 using pdq::test::springCase;
+using pdq::test::writeFile;
 using testing::HasSubstr;
 
 TEST(Cli, HelpListsEverySubcommand) {
@@ -154,6 +155,27 @@ TEST(Cli, PrepWritesTheThesisFiles) {
   // at X = 15 in the upper half, vx = 0.05 (15 - 7.5).
   const std::string alter = readFile(dir + "/dat/ParticleAlterAttrs.dat");
   EXPECT_THAT(alter, HasSubstr("\n127 15 7 0 0.375 "));
+}
+
+// A quasi-static run that cut back has more load steps than `load_steps`; pdq post
+// picture draws any of them (here a run of 4 load steps drawn from a scenario that says 2).
+TEST(Cli, PostDrawsAnyQuasiStaticLoadStep) {
+  const std::string dir = freshDir("post_quasi_static");
+  const auto scenario = [](int loadSteps) {
+    return "[model]\nname = \"mplm2d\"\ndamage = false\n[particles]\n"
+           "generator = \"mplm_plate\"\nwidth = 0.1\nheight = 0.12\n[solver]\n"
+           "kind = \"quasi_static\"\ntolerance = 1e-4\nload_steps = " +
+           std::to_string(loadSteps) + "\n[output]\nrestart_every = 1\n";
+  };
+  writeFile(dir + "/four.toml", scenario(4));
+  ASSERT_EQ(runPdq({"run", "four.toml", "-q", "--out", "out"}, dir).code, 0);
+  writeFile(dir + "/two.toml", scenario(2));
+  const auto r = runPdq({"post", "picture", "two.toml", "--restart", "out/ParticleAlterAttrs.4.rst",
+                         "-o", "four.png"},
+                        dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  EXPECT_THAT(r.out, HasSubstr("step 4"));
+  EXPECT_EQ(readFile(dir + "/four.png").substr(1, 3), "PNG");
 }
 
 TEST(Cli, PostDrawsPicturesAndPlots) {
