@@ -25,11 +25,7 @@ void Parameters2d::read(const Params& p) {
       throw InputError(v ? v->file : p.owner(), v ? v->line : 0, e.what());
     }
   }
-  if (fractureEnergy > 0) {
-    law.alphaT = alphaFromFractureEnergy(fractureEnergy, concrete.a, thickness, law.epsT);
-    if (!(law.alphaT > 1))
-      throw InputError(p.owner(), 0, "fracture_energy gives a tensile_ratio <= 1");
-  }
+  setAlphaT(p, alphaFromFractureEnergy(fractureEnergy, concrete.a, thickness, law.epsT));
 }
 
 double Parameters2d::concreteMass() const { return rho * std::sqrt(3.0) / 2 * s * s * thickness; }

@@ -37,8 +37,6 @@ namespace {
 
 // Poisson's ratio of the bars, for their torsional stiffness G J = E I/(1+ν).
 constexpr double steelPoisson = 0.3;
-// G_F (N/m) of the thesis's concrete (Table 4.1).
-constexpr double defaultFractureEnergy = 175;
 
 Vec rowVec(const double* row, int first) { return {row[first], row[first + 1], row[first + 2]}; }
 
@@ -54,20 +52,7 @@ class Mplm3d final : public Model {
       const auto v = p.raw("poisson_ratio");
       throw InputError(v ? v->file : p.owner(), v ? v->line : 0, e.what());
     }
-    // α_t follows from the fracture energy (thesis Table 4.1's G_F by default), so that a
-    // crack dissipates G_F per unit area whatever the spacing; tensile_ratio overrides it.
-    if (!p.has("tensile_ratio")) {
-      const auto v = p.raw("fracture_energy");
-      const double GF = v ? par_.fractureEnergy : defaultFractureEnergy;
-      if (!(GF > 0))
-        throw InputError(v ? v->file : p.owner(), v ? v->line : 0,
-                         "fracture_energy must be > 0 (or give tensile_ratio)");
-      par_.law.alphaT = alphaFromFractureEnergy(k_, par_.s, GF, par_.law.epsT);
-      if (!(par_.law.alphaT > 1))
-        throw InputError(v ? v->file : p.owner(), v ? v->line : 0,
-                         "fracture_energy gives a tensile_ratio <= 1 at this spacing and "
-                         "tensile_strain");
-    }
+    par_.setAlphaT(p, alphaFromFractureEnergy(k_, par_.s, par_.fractureEnergy, par_.law.epsT));
   }
   Schema schema() const override { return mplm3d::schema(); }
   double horizon() const override { return par_.horizon(); }

@@ -19,10 +19,15 @@ void Parameters::read(const Params& p) {
   law.alphaC = p.number("compressive_ratio", law.alphaC, 1.000001, big);
   law.beta = p.number("beta", law.beta, 0.0, big);
   law.crushing = p.flag("crushing", law.crushing);
-  fractureEnergy = p.number("fracture_energy", 0.0, 0.0, big);
+  fractureEnergy = p.number("fracture_energy", fractureEnergy, 0.0, big);
   law.alphaT = p.number("tensile_ratio", law.alphaT, 1.000001, big);
-  if (fractureEnergy > 0 && p.has("tensile_ratio"))
+  if (p.has("fracture_energy") && p.has("tensile_ratio"))
     throw InputError(p.owner(), 0, "give either tensile_ratio or fracture_energy, not both");
+  if (!(fractureEnergy > 0)) {
+    const auto v = p.raw("fracture_energy");
+    throw InputError(v ? v->file : p.owner(), v ? v->line : 0,
+                     "fracture_energy must be > 0 (or give tensile_ratio)");
+  }
 
   steelE = p.number("steel_modulus", steelE, 1e-12, big);
   steelRho = p.number("steel_density", steelRho, 1e-12, big);
@@ -37,6 +42,17 @@ void Parameters::read(const Params& p) {
   dtSafety = p.number("dt_safety", dtSafety, 1e-6, 1.0);
   powerIterations = static_cast<int>(p.integer("power_iterations", powerIterations));
   if (powerIterations < 1) throw InputError(p.owner(), 0, "power_iterations must be >= 1");
+}
+
+void Parameters::setAlphaT(const Params& p, double alphaFromEnergy) {
+  if (p.has("tensile_ratio")) return;
+  if (!(alphaFromEnergy > 1)) {
+    const auto v = p.raw("fracture_energy");
+    throw InputError(v ? v->file : p.owner(), v ? v->line : 0,
+                     "fracture_energy gives a tensile_ratio <= 1 at this spacing and "
+                     "tensile_strain");
+  }
+  law.alphaT = alphaFromEnergy;
 }
 
 double Parameters::steelMass(double area) const { return steelRho * area * s; }

@@ -18,7 +18,9 @@ struct Parameters {
   // Damage
   bool damage = true;
   DamageLaw law;
-  double fractureEnergy = 0;  // G_F > 0: α_t follows from it (the lattice's form)
+  // G_F (N/m, thesis Table 4.1). Unless `tensile_ratio` is given, each lattice sets α_t so
+  // that a crack normal to a bond dissipates G_F whatever the spacing (setAlphaT).
+  double fractureEnergy = 175;
   // Steel (Table 4.3)
   double steelE = 200e9, steelRho = 7850, steelYield = 0.00207;
   // Multiplies the steel particles' rotational inertia. A bar thicker than the spacing
@@ -36,6 +38,10 @@ struct Parameters {
   int powerIterations = 60;
 
   void read(const Params& p);
+  // α_t = the lattice's value for fractureEnergy, unless `tensile_ratio` was given; an
+  // α_t ≤ 1 (interactions breaking at their elastic limit) is an error at the line of
+  // `fracture_energy`.
+  void setAlphaT(const Params& p, double alphaFromEnergy);
   double horizon() const { return horizonFactor * s; }
   double steelMass(double area) const;  // ρ_s A_s s: a bar segment of one spacing
   static double rotationalInertia(double m, double s) { return m * s * s / 10; }  // r = s/2
