@@ -165,6 +165,24 @@ void Comm::exactSum(ExactSum& acc) const {
   acc.normalize();
 }
 
+void Comm::exactSums(std::span<ExactSum> accs) const {
+  constexpr std::size_t kWidth = ExactSum::kLimbs + 3;
+  std::vector<std::int64_t> all(kWidth * accs.size());
+  for (std::size_t k = 0; k < accs.size(); ++k) {
+    accs[k].normalize();
+    std::copy(accs[k].limbs().begin(), accs[k].limbs().end(), all.begin() + kWidth * k);
+    std::copy(accs[k].specials().begin(), accs[k].specials().end(),
+              all.begin() + kWidth * k + ExactSum::kLimbs);
+  }
+  allreduce(MPI_IN_PLACE, all.data(), static_cast<int>(all.size()), MPI_INT64_T, MPI_SUM,
+            mpi(comm_));
+  for (std::size_t k = 0; k < accs.size(); ++k) {
+    std::copy_n(all.begin() + kWidth * k, ExactSum::kLimbs, accs[k].limbs().begin());
+    std::copy_n(all.begin() + kWidth * k + ExactSum::kLimbs, 3, accs[k].specials().begin());
+    accs[k].normalize();
+  }
+}
+
 double Comm::sum(ExactSum& acc) const {
   exactSum(acc);
   return acc.value();

@@ -4,6 +4,7 @@
 // <mpi.h> is included by comm.cpp only, so models (and out-of-tree plugins) build without
 // MPI's headers.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/exact_sum.hpp"
@@ -45,6 +46,8 @@ class Comm {
   bool any(bool v) const;
   double sum(ExactSum& acc) const;  // exact, order-independent global sum
   void exactSum(ExactSum& acc) const;
+  // Several exact sums in one message; accs[k] holds the global sum after the call.
+  void exactSums(std::span<ExactSum> accs) const;
   // Gathers variable-length byte blocks on rank 0 (empty elsewhere).
   std::vector<std::vector<char>> gather(const std::vector<char>& block) const;
   // The same blocks in one buffer, rank r's at [starts[r], starts[r + 1]): no copy per block,

@@ -59,6 +59,7 @@ class Context {
 
   // Global reductions, identical on every rank and for every processor grid.
   double sum(ExactSum& acc) const { return comm_.sum(acc); }
+  void sums(std::span<ExactSum> accs) const { comm_.exactSums(accs); }  // one message
   template <class F>
   double sumOwned(F&& value) const {
     ExactSum acc;

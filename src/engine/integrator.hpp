@@ -175,10 +175,12 @@ class Integrator {
 
   // Quasi-static: where the load path stands, in units of the largest increment
   // (1/load_steps of load_scale): the last converged load step's `progress`, the next
-  // increment (a power of 2, at most 1), and the load steps in a row taken at once.
-  // Saved in restart files with the integrator's state.
+  // increment (a power of 2, at most 1), the load steps in a row taken at once, and under
+  // force control the lowest progress found to have no equilibrium near the last one
+  // (0: none), which no later load step reaches. Saved in restart files with the
+  // integrator's state.
   struct LoadPath {
-    double progress = 0, increment = 1, easy = 0;
+    double progress = 0, increment = 1, easy = 0, beyond = 0;
   };
   LoadPath& loadPath() { return path_; }
 

@@ -2,7 +2,8 @@
 // Barnes), built on the integrator's degrees of freedom, bodies and constraints.
 // Fictitious undamped dynamics with time step 1 and a diagonal fictitious mass per DOF,
 //     v(n+½) = v(n−½) + Λ⁻¹ F(n),   x(n+1) = x(n) + v(n+½),
-// started from rest, v(½) = Λ⁻¹ F(0) / 2; when the kinetic energy ½ Σ Λ v² of the next step
+// started from rest at a predictor (the last equilibrium's displacements × λ/λ_last),
+// v(½) = Λ⁻¹ F(0) / 2; when the kinetic energy ½ Σ Λ v² of the next step
 // would fall, it has passed a peak (the motion crossed the equilibrium of the mode that
 // dominates it) and the motion starts again from rest at x(n). No stiffness estimate is
 // needed, so softening (a negative local stiffness) does not leave the motion undamped.
@@ -19,6 +20,7 @@
 // evaluation's forces, computed with the damage it left, are the ones in equilibrium. See
 // docs/quasi-static.md.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -46,6 +48,7 @@ constexpr double kSettled = 1e-2;
 // (the step's displacement per load over kRunaway times the last equilibrium's).
 constexpr double kRunaway = 10;
 constexpr long kRunawayEvery = 10;
+constexpr double kOvershoot = 2;
 }  // namespace
 
 double Integrator::dofForce(const Particles& P, std::size_t i, int d, double factor) const {
@@ -182,6 +185,30 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       if (phi[0] != 0 || phi[1] != 0 || phi[2] != 0) turn(P, i, phi);
     }
   }
+  // Predictor: the free degrees of freedom start from the last equilibrium's displacements
+  // scaled to this load step's factor (the secant: exact for a linear structure, and it
+  // needs nothing but the state a restart file holds), not from the last equilibrium.
+  if (previous > 0 && factor > previous) {
+    const double scale = factor / previous;
+    for (std::size_t i = 0; i < n; ++i) {
+      const Body& b = bodies_[i];
+      double* a = P.alter(i);
+      for (int d = 0; d < nLinear; ++d) {
+        const Constraint c = b.constraint[d];
+        if (c != Constraint::Free && c != Constraint::Resting) continue;
+        const double ref = d < nT_ ? P.fixed(i)[pos_[d]] : 0.0;
+        a[pos_[d]] = ref + (a[pos_[d]] - ref) * scale;
+        if (c == Constraint::Resting) a[pos_[d]] = std::max(a[pos_[d]], ref);
+      }
+      if (rotation_ == Rotation::Spatial) {
+        double phi[3] = {0, 0, 0};
+        for (int k = 0; k < 3; ++k)
+          if (b.constraint[nT_ + k] == Constraint::Free)
+            phi[k] = (scale - 1) * displacement(P, i, nT_ + k);
+        if (phi[0] != 0 || phi[1] != 0 || phi[2] != 0) turn(P, i, phi);
+      }
+    }
+  }
   exchange();
 
   // Per owned DOF: fictitious mass, velocity and acceleration.
@@ -200,6 +227,21 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     return bodies_[i].constraint[d] == Constraint::Resting &&
            P.alter(i)[pos_[d]] <= P.fixed(i)[pos_[d]];
   };
+  // The applied load's norm (constant within the load step).
+  const double pp = ctx.sumOwned([&](std::size_t i) {
+    double p2 = 0;
+    for (int d = 0; d < nd; ++d) {
+      const double load = bodies_[i].load[d] * factor;
+      p2 += load * load * weight(i, d);
+    }
+    return p2;
+  });
+  // The snap-through look's limit on this load step's displacement along the loads: kRunaway
+  // times the last equilibrium's compliance u/λ for its increment. The motion from rest
+  // overshoots a linear structure's equilibrium by at most the step's own increment, so a
+  // motion past kOvershoot times that limit does not come back within it.
+  const bool stepping = !control.active() && lastAlong != 0 && factor > previous && previous > 0;
+  const double stepLimit = kRunaway * std::fabs(lastAlong) / previous * (factor - previous);
   Bonds::Saved kept;
   ctx.bonds.save(kept);
   Relaxed out;
@@ -213,34 +255,40 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
         ctx.bonds.restore(kept);
     }
     forces();
-    // Out-of-balance forces of the free DOFs; reactions of the held ones (and of a resting
-    // DOF its support pushes).
-    double rr = 0, pp = 0, reaction = 0;
-    {
-      ExactSum sr, sp, sR;
-      for (std::size_t i = 0; i < n; ++i) {
-        double r2 = 0, p2 = 0, R2 = 0;
-        for (int d = 0; d < nd; ++d) {
-          const std::size_t k = nd * i + d;
-          const double f = dofForce(P, i, d, factor), w = weight(i, d);
-          const double load = bodies_[i].load[d] * factor;
-          p2 += load * load * w;
-          if (free[k] && !(onSupport(i, d) && f < 0)) {
-            r2 += f * f * w;
-            acc[k] = f / lambda[k];
-          } else {
-            R2 += f * f * w;
-            acc[k] = 0;
-          }
+    // One pass and one global sum: the out-of-balance forces of the free DOFs; the reactions
+    // of the held ones (and of a resting DOF its support pushes); twice the kinetic energy of
+    // the undamped step and of a step from rest (kinetic damping); every kRunawayEvery
+    // iterations the work of the loads on the displacements (the runaway look).
+    const bool look = !control.active() && lastAlong != 0 && it % kRunawayEvery == 0;
+    enum { kResidual, kReaction, kMoving, kStill, kWork, kSums };
+    std::array<ExactSum, kSums> sums;
+    for (std::size_t i = 0; i < n; ++i) {
+      double r2 = 0, R2 = 0, e = 0, e0 = 0, work = 0;
+      for (int d = 0; d < nd; ++d) {
+        const std::size_t k = nd * i + d;
+        const double f = dofForce(P, i, d, factor), w = weight(i, d);
+        if (free[k] && !(onSupport(i, d) && f < 0)) {
+          r2 += f * f * w;
+          acc[k] = f / lambda[k];
+        } else {
+          R2 += f * f * w;
+          acc[k] = 0;
         }
-        sr.add(r2);
-        sp.add(p2);
-        sR.add(R2);
+        if (free[k]) {
+          const double u = v[k] + acc[k];
+          e += lambda[k] * u * u;
+          e0 += lambda[k] * acc[k] * acc[k] / 4;
+        }
+        if (look && bodies_[i].load[d] != 0) work += bodies_[i].load[d] * displacement(P, i, d);
       }
-      rr = ctx.sum(sr);
-      pp = ctx.sum(sp);
-      reaction = ctx.sum(sR);
+      sums[kResidual].add(r2);
+      sums[kReaction].add(R2);
+      sums[kMoving].add(e);
+      sums[kStill].add(e0);
+      sums[kWork].add(work);
     }
+    ctx.sums(sums);
+    const double rr = sums[kResidual].value(), reaction = sums[kReaction].value();
     out.residual = std::sqrt(rr);
     out.reference = pp > 0 ? std::sqrt(pp) : std::sqrt(reaction);
     out.iterations = it;
@@ -248,9 +296,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       // Snapped through: the equilibrium found is over kRunaway times as compliant, for this
       // load step's increment, as the last one was on average (u / λ): the structure passed
       // a limit point of its curve (a crack ran through) and came to rest on another branch.
-      if (!control.active() && lastAlong != 0 && factor > previous && previous > 0 &&
-          std::fabs(alongLoads() - lastAlong) / (factor - previous) >
-              kRunaway * std::fabs(lastAlong) / previous) {
+      if (stepping && std::fabs(alongLoads() - lastAlong) > stepLimit) {
         out.converged = false;
         out.runaway = true;
       }
@@ -261,34 +307,21 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       break;
     }
     // Ran away: the structure moved along the loads over kRunaway times as far as at the
-    // last equilibrium.
-    if (!control.active() && lastAlong != 0 && it % kRunawayEvery == 0 &&
-        std::fabs(alongLoads()) > kRunaway * std::fabs(lastAlong)) {
-      out.converged = false;
-      out.runaway = true;
-      break;
-    }
-    // Kinetic damping: twice the kinetic energy of the undamped step and of a step from rest;
-    // when the former would fall, the motion has passed a peak and starts again from rest.
-    bool rest;
-    {
-      ExactSum moving, still;
-      for (std::size_t i = 0; i < n; ++i) {
-        double e = 0, e0 = 0;
-        for (int d = 0; d < nd; ++d) {
-          const std::size_t k = nd * i + d;
-          if (!free[k]) continue;
-          const double w = v[k] + acc[k];
-          e += lambda[k] * w * w;
-          e0 += lambda[k] * acc[k] * acc[k] / 4;
-        }
-        moving.add(e);
-        still.add(e0);
+    // last equilibrium, or, in this load step, over kOvershoot times the snap-through limit.
+    if (look) {
+      const double along = loadTotal > 0 ? sums[kWork].value() / loadTotal : 0.0;
+      if (std::fabs(along) > kRunaway * std::fabs(lastAlong) ||
+          (stepping && std::fabs(along - lastAlong) > kOvershoot * stepLimit)) {
+        out.converged = false;
+        out.runaway = true;
+        break;
       }
-      const double now = ctx.sum(moving), fromRest = ctx.sum(still);
-      rest = it == 0 || now < kinetic;
-      kinetic = rest ? fromRest : now;
     }
+    // Kinetic damping: when the kinetic energy of the undamped step would fall, the motion
+    // has passed a peak and starts again from rest.
+    const double now = sums[kMoving].value(), fromRest = sums[kStill].value();
+    const bool rest = it == 0 || now < kinetic;
+    kinetic = rest ? fromRest : now;
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < nOwned; ++i) {
       double* a = P.alter(i);

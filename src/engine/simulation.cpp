@@ -342,6 +342,28 @@ long Simulation::brokenInteractions() {
   return comm_.sum(dead) / 2;
 }
 
+// Quasi-static: the run ends at the last equilibrium (load factor `previous`), none found at
+// `beyond` for the reason `what`.
+void Simulation::stopBelow(double previous, double beyond, const std::string& what) {
+  last_.beyond = beyond;
+  ctx_->setStaticFactor(previous);
+  {
+    Timers::Scope t(timers_, Phase::Force);
+    model_->force(*ctx_);  // the last equilibrium's forces again (its damage is committed)
+  }
+  std::ostringstream reason;
+  reason << "no equilibrium beyond load factor " << previous << ": " << what << ". "
+         << (cfg_.solver.control.active()
+                 ? "The displacement control cannot follow the curve here (a snap-back: "
+                   "the load-displacement curve turns back) or the structure became a "
+                   "mechanism"
+                 : "The structure has passed its peak load (a limit point under force "
+                   "control; displacement control follows the descending branch) or became "
+                   "a mechanism")
+         << "; or max_iterations is too small";
+  ctx_->requestStop(reason.str());
+}
+
 // Quasi-static: step k relaxes the next load step to equilibrium, trying again with half
 // the increment when it does not converge or breaks more than max_broken interactions;
 // logs its iterations and residual and adds its row to quasi_static.csv. When even the
@@ -372,8 +394,20 @@ bool Simulation::relaxLoadStep() {
   Integrator::Relaxed r;
   double factor = previous;
   long broken = brokenBefore;
+  const double smallest = std::ldexp(1.0, -solver.maxCutBacks);
   for (int cuts = 0;; ++cuts) {  // cuts: cut-backs of this load step
-    const double increment = std::min(path.increment, full - path.progress);
+    double increment = std::min(path.increment, full - path.progress);
+    // A load found to have no equilibrium near the last one is not tried again: the
+    // increment is halved until the load step stays below it.
+    while (path.beyond > 0 && path.progress + increment >= path.beyond && increment > smallest)
+      increment /= 2, path.increment = increment, path.easy = 0;
+    if (path.beyond > 0 && path.progress + increment >= path.beyond) {
+      stopBelow(previous, staticFactor(path.beyond),
+                "load factor " + numberText(staticFactor(path.beyond)) +
+                    " had no equilibrium near an earlier one, and the smallest increment (2^-" +
+                    std::to_string(solver.maxCutBacks) + " of the largest) reaches it");
+      return endStep(false);
+    }
     factor = staticFactor(path.progress + increment);
     ctx_->setStaticFactor(factor);
     r = integrator_->relax(*ctx_, solver, cfg_.source, factor, previous, forces, exchange);
@@ -402,8 +436,11 @@ bool Simulation::relaxLoadStep() {
            << " of the applied load (tolerance " << solver.tolerance << ")";
     std::copy(positions.begin(), positions.end(), particles_.alter(0));
     bonds_.restore(bonds);
+    if (r.runaway && !solver.control.active() &&
+        (path.beyond == 0 || path.progress + increment < path.beyond))
+      path.beyond = path.progress + increment;
     // Increments never fall below 2^-max_cut_backs of the largest, so the run cannot creep.
-    if (increment > std::ldexp(1.0, -solver.maxCutBacks)) {
+    if (increment > smallest) {
       path.increment = increment / 2, path.easy = 0;
       if (comm_.root()) ctx_->log() << what.str() << "; the increment halved\n";
       continue;
@@ -417,20 +454,7 @@ bool Simulation::relaxLoadStep() {
                        what.str() +
                            "; raise max_iterations or use more load_steps (or the "
                            "structure is a mechanism: check its supports)");
-    last_.beyond = factor;
-    ctx_->setStaticFactor(previous);
-    forces();  // the last equilibrium's forces again (its damage is already committed)
-    std::ostringstream reason;
-    reason << "no equilibrium beyond load factor " << previous << ": " << what.str() << ". "
-           << (solver.control.active()
-                   ? "The displacement control cannot follow the curve here (a snap-back: "
-                     "the load-displacement curve turns back) or the structure became a "
-                     "mechanism"
-                   : "The structure has passed its peak load (a limit point under force "
-                     "control; displacement control follows the descending branch) or became "
-                     "a mechanism")
-           << "; or max_iterations is too small";
-    ctx_->requestStop(reason.str());
+    stopBelow(previous, factor, what.str());
     return endStep(false);
   }
   const double relative = r.reference > 0 ? r.residual / r.reference : 0.0;

@@ -132,6 +132,7 @@ class Simulation {
   [[noreturn]] void reportInstability(Gid id, const std::string& what);
   void writeLogs();  // debug.txt (appended) and timing.out (rewritten); collective
   bool relaxLoadStep();
+  void stopBelow(double previous, double beyond, const std::string& what);
   bool endStep(bool interrupted);
   double staticFactor(double progress) const;
   long brokenInteractions();  // collective
