@@ -46,8 +46,12 @@ TEST(QuasiStatic, PatchTestRelaxesToTheUniformStrain) {
     constrain(ps, {k}, FIX_X | FIX_Y | FIX_T, {exx * X + exy * Y, exy * X + eyy * Y, 0});
   }
   Comm comm;
-  auto sim = test::quasiStatic(comm, test::params({{"kinematics", "small"}}), ps,
-                               test::solver(1e-10), "qs_patch_out");
+  // α_t = 10 as when the test was written: the boundary layer's jump stretches its neighbours
+  // past ε_t for a while, and with the default's slower softening that transient damage keeps
+  // the single load step from converging in the iterations allowed.
+  auto sim =
+      test::quasiStatic(comm, test::params({{"kinematics", "small"}, {"tensile_ratio", "10"}}), ps,
+                        test::solver(1e-10), "qs_patch_out");
   sim->run();
   const auto rows = test::loadStepRows("qs_patch_out");
   ASSERT_EQ(rows.size(), 1u);
