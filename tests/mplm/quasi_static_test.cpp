@@ -47,8 +47,8 @@ TEST(QuasiStatic, PatchTestRelaxesToTheUniformStrain) {
   }
   Comm comm;
   // α_t = 10 as when the test was written: the boundary layer's jump stretches its neighbours
-  // past ε_t for a while, and with the default's slower softening that transient damage keeps
-  // the single load step from converging in the iterations allowed.
+  // past ε_t for a while, and with the default's slower softening that transient damage gets
+  // the single load step cut back (two load steps instead of one).
   auto sim =
       test::quasiStatic(comm, test::params({{"kinematics", "small"}, {"tensile_ratio", "10"}}), ps,
                         test::solver(1e-10), "qs_patch_out");
