@@ -253,8 +253,9 @@ void ProcCube::remapBonds(long step) {
   }
 }
 
-void ProcCube::halo() {
-  const std::size_t nA = p_.schema().nAlter(), nH = p_.schema().nHalo();
+void ProcCube::halo(bool allColumns) {
+  const std::size_t nA = p_.schema().nAlter(),
+                    nH = allColumns ? nA : static_cast<std::size_t>(p_.schema().nHalo());
   const std::uint64_t m0 = comm_.messages(), b0 = comm_.bytes();
   std::uint64_t wall = 0;
   const Domain& dom = dec_.domain();

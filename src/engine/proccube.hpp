@@ -46,8 +46,9 @@ class ProcCube {
   // Shuffle (thesis §3.3.4): wraps periodic positions, migrates particles that left the
   // core, then rebuild(). Call only for models whose particles change neighbours.
   void shuffle(long step);
-  // Halo exchange of the alterable attributes ghosts need (Schema::nHalo).
-  void halo();
+  // Halo exchange of the alterable attributes ghosts need (Schema::nHalo), or of all of
+  // them (`allColumns`: the engine's checks read the ghosts' velocities).
+  void halo(bool allColumns = false);
   // The same plan for a model's own array of `width` values per local particle (owned
   // first, then ghosts): the ghosts' rows get their owners' values. Nothing is shifted
   // across periodic boundaries, so positions do not belong here.

@@ -580,9 +580,15 @@ bool Simulation::advance() {
     stats_.haloBytes = cube_->stats().haloBytes;
     stats_.haloWallParticles = cube_->stats().haloWallParticles;
   }
-  if (checkMoves && probe[4] > model_->horizon() / 2)
+  if (checkMoves && probe[4] > model_->horizon() / 2) {
+    // The ghosts' velocities are this step's only if the halo sent them.
+    if (particles_.schema().nHalo() < particles_.schema().nAlter()) {
+      Timers::Scope t(timers_, Phase::Communication);
+      cube_->halo(true);
+    }
     if (const auto jump = bondJump(particles_, bonds_, *model_, comm_, ctx_->dt()))
       reportInstability(jump->first, jump->second);
+  }
   return endStep(interrupted);
 }
 
