@@ -27,9 +27,12 @@ if [[ $quick == quick ]]; then rounds=1 full=16 half=13 pdsteps=10 ljfull=8 ljha
 
 field() { sed -nE "s/(^|.* )$1=([^ ]*).*/\2/p" | head -1; }  # key=value from stdin
 # One run in its own folder: prints "wall cpu_sum work" (work: bond-steps or atom-steps).
-run() {  # dir ranks work-kind args...
+run() {  # dir ranks work-kind [unbound] args...
   local dir=$1 np=$2 kind=$3 out
   shift 3
+  # Two separate 1-rank launches at once would otherwise both be bound to core 0.
+  local -a mpirun=("${mpirun[@]}")
+  if [[ $1 == unbound ]]; then mpirun+=(--bind-to none); shift; fi
   mkdir -p "$dir"
   if [[ $kind == pd ]]; then
     out=$(cd "$dir" && "${mpirun[@]}" -np "$np" "$pd" block "$@")
@@ -59,8 +62,8 @@ for w in pmb lps lj; do
     read -r t1 c1 w1 < <(run "$d/one" 1 "$kind" "${whole[@]}")
     read -r t2 c2 w2 < <(run "$d/two" 2 "$kind" "${whole[@]}")
     read -r ta ca wa < <(run "$d/alone" 1 "$kind" "${part[@]}")
-    run "$d/pa" 1 "$kind" "${part[@]}" >"$d.pa" &
-    run "$d/pb" 1 "$kind" "${part[@]}" >"$d.pb"
+    run "$d/pa" 1 "$kind" unbound "${part[@]}" >"$d.pa" &
+    run "$d/pb" 1 "$kind" unbound "${part[@]}" >"$d.pb"
     wait
     read -r tpa cpa wpa <"$d.pa"
     read -r tpb cpb wpb <"$d.pb"
