@@ -10,9 +10,8 @@ namespace pdq::mplm {
 
 struct DamageLaw {
   // Calibrated as §4.3.2 prescribes rather than copied from Table 4.2 (1.26e-4, β = 0.1):
-  // ε_t ≈ f_t/E (2.758 MPa / 24.86 GPa) reproduces f_t in uniaxial tension, and β = 0.05
-  // gives the compressive/tensile strength ratio of ~10 β is meant for; with the end
-  // curvatures of eq. 4.10, β = 0.1 gives 5 and halves the beams' strength (docs/mplm.md).
+  // ε_t ≈ f_t/E (2.758 MPa / 24.86 GPa), and β where the compressive/tensile strength
+  // ratio, which §4.3.2 wants near 10, is highest on this lattice (docs/mplm.md).
   double epsT = 1.109e-4;  // ε_t: tensile limit of ε_mp+
   double alphaT = 10;      // α_t: ε_mp+ = α_t ε_t breaks the interaction
   double epsC = -1e-3;     // ε_c < 0: compressive limit of ε_mp−
