@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -35,11 +36,11 @@ TEST(CliExamples, EveryScenarioRuns) {
   }
 }
 
-// The reinforced beams of bench/lab/ (too long to run here) build as their comments say:
-// the lattice's particle count, the bar layers (one line of steel particles each, of the
-// stated area at the stated height), the steel plates' particles (OA1: a loading plate
-// over 3 top particles and two bearing plates of 3; Janney: two loading plates and two
-// bearing plates of 3) and no load: the plates are moved by displacement control.
+// The reinforced beams of examples/lab/ build as their comments say: the lattice's particle
+// count, the bar layers (one line of steel particles each, of the stated area at the stated
+// height), the steel plates' particles (OA1: a loading plate over 3 top particles and two
+// bearing plates of 3; Janney: two loading plates and two bearing plates of 3) and no load:
+// the plates are moved by displacement control.
 TEST(CliExamples, LabBeamsBuild) {
   struct Beam {
     std::string name;
@@ -55,7 +56,7 @@ TEST(CliExamples, LabBeamsBuild) {
     SCOPED_TRACE(b.name);
     const std::string dir = freshDir("lab_" + b.name);
     const auto r =
-        runPdq({"prep", sourceDir() + "/bench/lab/" + b.name + ".toml", "-o", "dat"}, dir);
+        runPdq({"prep", sourceDir() + "/examples/lab/" + b.name + ".toml", "-o", "dat"}, dir);
     ASSERT_EQ(r.code, 0) << r.all();
     std::istringstream in(readFile(dir + "/dat/ParticleFixedAttrs.dat"));
     int concrete = 0, plate = 0, loaded = 0;
@@ -83,4 +84,32 @@ TEST(CliExamples, LabBeamsBuild) {
     EXPECT_EQ(plate, b.plateParticles);
     EXPECT_EQ(loaded, 0);
   }
+}
+
+// The notched plain beam turns freely on its supports, as on the test's rollers: one bottom
+// particle held at each support line (pinned at x = 25 mm, on a roller at 150 mm); held over
+// several particles the supports would clamp the beam's ends.
+TEST(CliExamples, NotchedBeamRestsOnOneParticlePerSupport) {
+  const std::string dir = freshDir("lab_gregoire_notched");
+  const auto r =
+      runPdq({"prep", sourceDir() + "/examples/lab/gregoire_notched.toml", "-o", "dat"}, dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  std::istringstream in(readFile(dir + "/dat/ParticleFixedAttrs.dat"));
+  std::vector<std::pair<double, int>> held;  // x, constraint
+  for (std::string line; std::getline(in, line);) {
+    if (line.empty() || line[0] == '#') continue;
+    std::istringstream row(line);
+    double id, x, y, z, material, bar, link, barArea, inertia, constraint;
+    row >> id >> x >> y >> z >> material >> bar >> link >> barArea >> inertia >> constraint;
+    if (constraint != 0) {
+      EXPECT_NEAR(y, 0.0, 1e-12);
+      held.emplace_back(x, static_cast<int>(constraint));
+    }
+  }
+  std::sort(held.begin(), held.end());
+  ASSERT_EQ(held.size(), 2u);
+  EXPECT_NEAR(held[0].first, 0.025, 1e-9);
+  EXPECT_EQ(held[0].second, 3);  // u_x and u_y held: a pin
+  EXPECT_NEAR(held[1].first, 0.15, 1e-9);
+  EXPECT_EQ(held[1].second, 2);  // u_y held: a roller
 }
