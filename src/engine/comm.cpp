@@ -223,11 +223,16 @@ std::vector<std::vector<char>> Comm::gather(const std::vector<char>& block) cons
   return out;
 }
 
+// Waited for as above: ranks waiting long for rank 0 (a quasi-static strength run on fewer
+// ranks than the search has) sleep instead of holding a core.
 std::vector<char> Comm::broadcast(std::vector<char> data) const {
   long n = static_cast<long>(data.size());
-  MPI_Bcast(&n, 1, MPI_LONG, 0, mpi(comm_));
+  MPI_Request req;
+  MPI_Ibcast(&n, 1, MPI_LONG, 0, mpi(comm_), &req);
+  await(1, &req);
   data.resize(n);
-  MPI_Bcast(data.data(), static_cast<int>(n), MPI_BYTE, 0, mpi(comm_));
+  MPI_Ibcast(data.data(), static_cast<int>(n), MPI_BYTE, 0, mpi(comm_), &req);
+  await(1, &req);
   return data;
 }
 

@@ -210,17 +210,17 @@ void Integrator::resolve(const Schema& s) {
 
 std::vector<double> Integrator::state() const {
   if (omega2_ < 0) return {holdDamping_};
-  return {holdDamping_,    omega2_,    iterations_, path_.progress,
-          path_.increment, path_.easy, path_.beyond};
+  return {holdDamping_,    omega2_,    iterations_,  path_.progress,
+          path_.increment, path_.easy, path_.beyond, path_.first};
 }
 
 void Integrator::setState(std::span<const double> s) {
-  if (s.size() != 1 && s.size() != 6 && s.size() != 7)
-    throw std::logic_error("integrator state: one, six or seven values expected");
+  if (s.size() != 1 && (s.size() < 6 || s.size() > 8))
+    throw std::logic_error("integrator state: one or six to eight values expected");
   holdDamping_ = s[0];
-  if (s.size() >= 6) {  // six: written before the load path kept `beyond`
+  if (s.size() >= 6) {  // six or seven: written before the load path kept `beyond`, `first`
     omega2_ = s[1], iterations_ = s[2];
-    path_ = {s[3], s[4], s[5], s.size() == 7 ? s[6] : 0.0};
+    path_ = {s[3], s[4], s[5], s.size() >= 7 ? s[6] : 0.0, s.size() == 8 ? s[7] : 0.0};
   }
 }
 

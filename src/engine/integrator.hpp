@@ -177,12 +177,15 @@ class Integrator {
   // (1/load_steps of load_scale): the last converged load step's `progress`, the next
   // increment (a power of 2, at most 1), the load steps in a row taken at once, and under
   // force control the lowest progress found to have no equilibrium near the last one
-  // (0: none), which no later load step reaches. Saved in restart files with the
-  // integrator's state.
+  // (0: none), which no later load step reaches, and the iterations of the first load step
+  // (0: not done). Saved in restart files with the integrator's state.
   struct LoadPath {
-    double progress = 0, increment = 1, easy = 0, beyond = 0;
+    double progress = 0, increment = 1, easy = 0, beyond = 0, first = 0;
   };
   LoadPath& loadPath() { return path_; }
+  // The most iterations a load step may take: max_iterations, or kFirstStepsPerCap times the
+  // first load step's when more (docs/quasi-static.md, "Iteration cap").
+  long iterationCap(const Solver& solver) const;
 
   // Quasi-static: relaxes the owned particles to static equilibrium under the loads and
   // prescribed values × `factor` (the previous load step's factor `previous`), by

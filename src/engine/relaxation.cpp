@@ -49,7 +49,15 @@ constexpr double kSettled = 1e-2;
 constexpr double kRunaway = 10;
 constexpr long kRunawayEvery = 10;
 constexpr double kOvershoot = 2;
+// A load step may take this many times the first load step's iterations (when more than
+// max_iterations): the first, an elastic relaxation from rest, measures how slowly the
+// lattice's lowest modes relax, which grows with the particles along the structure.
+constexpr double kFirstStepsPerCap = 10;
 }  // namespace
+
+long Integrator::iterationCap(const Solver& solver) const {
+  return std::max(solver.maxIterations, static_cast<long>(kFirstStepsPerCap * path_.first));
+}
 
 double Integrator::dofForce(const Particles& P, std::size_t i, int d, double factor) const {
   const double f = P.integ(i)[frc_[d]];
@@ -245,6 +253,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   Bonds::Saved kept;
   ctx.bonds.save(kept);
   Relaxed out;
+  const long cap = iterationCap(solver);
   const long nOwned = static_cast<long>(n);
   double kinetic = 0;  // twice the kinetic energy of the last step
   for (long it = 0;; ++it) {
@@ -302,7 +311,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       }
       break;
     }
-    if (it >= solver.maxIterations) {
+    if (it >= cap) {
       out.converged = false;
       break;
     }

@@ -414,6 +414,7 @@ bool Simulation::relaxLoadStep() {
     broken = brokenInteractions();
     const bool tooMany = solver.maxBroken > 0 && broken - brokenBefore > solver.maxBroken;
     if (r.converged && !tooMany) {
+      if (path.progress == 0) path.first = static_cast<double>(r.iterations);
       path.progress += increment;
       if (cuts == 0 && ++path.easy >= 2 && path.increment < 1)
         path.increment = std::min(1.0, 2 * path.increment), path.easy = 0;
@@ -431,7 +432,7 @@ bool Simulation::relaxLoadStep() {
               "far as at the last equilibrium, or snapped through to an equilibrium over ten "
               "times as compliant";
     else
-      what << "did not converge in " << solver.maxIterations
+      what << "did not converge in " << integrator_->iterationCap(solver)
            << " iterations: the out-of-balance force is still " << relative
            << " of the applied load (tolerance " << solver.tolerance << ")";
     std::copy(positions.begin(), positions.end(), particles_.alter(0));

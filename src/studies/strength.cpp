@@ -174,8 +174,8 @@ void pack(const Trial& t, std::vector<char>& out) {
   out.insert(out.end(), t.mode.begin(), t.mode.end());
 }
 
-// Reads the trial at `at` and moves `at` past it.
-Trial unpack(const std::vector<char>& in, std::size_t& at, const Options& opt) {
+// Reads the trial at `at` (all but its folder) and moves `at` past it.
+Trial unpack(const std::vector<char>& in, std::size_t& at) {
   Numbers n;
   std::memcpy(&n, in.data() + at, sizeof n);
   at += sizeof n;
@@ -191,7 +191,6 @@ Trial unpack(const std::vector<char>& in, std::size_t& at, const Options& opt) {
   t.steps = n.steps;
   t.mode.assign(in.data() + at, n.modeLength);
   at += n.modeLength;
-  t.dir = trialDir(opt, t.index);
   return t;
 }
 
@@ -216,7 +215,8 @@ std::vector<Trial> runBatch(const Case& c, const Loading& l, const std::vector<d
   all = comm.broadcast(std::move(all));
   std::vector<Trial> out(loads.size());
   for (std::size_t at = 0; at < all.size();) {
-    Trial t = unpack(all, at, opt);
+    Trial t = unpack(all, at);
+    t.dir = trialDir(opt, t.index);
     out[t.index - firstIndex] = std::move(t);
   }
   for (const Trial& t : opt.done) {
@@ -282,7 +282,16 @@ Result findStrength(const Case& c, double lo, double hi, Comm& comm, const Optio
   return out;
 }
 
-Result staticStrength(const Case& c, double hi, Comm& comm, const StaticOptions& opt) {
+namespace {
+
+// The quasi-static run takes one rank per this many particles: each relaxation iteration is
+// one force evaluation and two messages (the halo and the exact sums), and on fewer
+// particles per rank the messages' waits cost more than the split saves
+// (docs/quasi-static.md, "Ranks").
+constexpr std::size_t kParticlesPerRank = 5000;
+
+// The quasi-static run itself, on the ranks of `comm`.
+Result staticRun(const Case& c, double hi, Comm& comm, const StaticOptions& opt) {
   RunConfig run = c.run;
   run.procs = {0, 0, 0};
   run.loading = {};
@@ -327,6 +336,37 @@ Result staticStrength(const Case& c, double hi, Comm& comm, const StaticOptions&
   r.mode = tr.mode;
   tr.holds = r.upper < 0;
   tr.load = tr.holds ? r.lower : r.upper;
+  r.trials = {tr};
+  return r;
+}
+
+}  // namespace
+
+Result staticStrength(const Case& c, double hi, Comm& comm, const StaticOptions& opt) {
+  // The run on the first ranks, one per kParticlesPerRank particles (at least one); the
+  // others wait for its result.
+  const int ranks = static_cast<int>(std::clamp<std::size_t>(
+      c.particles.size() / kParticlesPerRank, 1, static_cast<std::size_t>(comm.size())));
+  Comm group = comm.split(comm.rank() < ranks ? 0 : 1);
+  Result r;
+  std::vector<char> message;
+  if (comm.rank() < ranks) {
+    r = staticRun(c, hi, group, opt);
+    if (comm.root()) {
+      pack(r.trials[0], message);
+      const double bounds[2] = {r.lower, r.upper};
+      const char* p = reinterpret_cast<const char*>(bounds);
+      message.insert(message.end(), p, p + sizeof bounds);
+    }
+  }
+  message = comm.broadcast(std::move(message));
+  if (comm.rank() < ranks) return r;
+  std::size_t at = 0;
+  Trial tr = unpack(message, at);
+  tr.dir = opt.outDir.empty() ? "" : opt.outDir + "/quasi_static";
+  double bounds[2];
+  std::memcpy(bounds, message.data() + at, sizeof bounds);
+  r.lower = bounds[0], r.upper = bounds[1], r.mode = tr.mode;
   r.trials = {tr};
   return r;
 }

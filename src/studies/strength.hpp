@@ -90,8 +90,8 @@ Result findStrength(const Case& c, double lo, double hi, Comm& comm, const Optio
 // outDir/quasi_static).
 struct StaticOptions {
   double tolerance = 1e-4;
-  long loadSteps = 20, maxIterations = 20000, maxBroken = 0;
-  int maxCutBacks = 8;
+  long loadSteps = 10, maxIterations = 50000, maxBroken = 0;
+  int maxCutBacks = 5;
   std::string outDir;
 };
 Result staticStrength(const Case& c, double hi, Comm& comm, const StaticOptions& opt);

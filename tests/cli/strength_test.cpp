@@ -1,6 +1,7 @@
 // pdq strength through the executable on a thesis plate (examples/mplm/tension_x.toml):
 // the report, the files it writes, a picture of a trial's damage by pdq post, the same
-// trials on 1, 2 and 3 ranks, and bad options refused with their name.
+// trials on 1, 2 and 3 ranks (by the bisection and by the quasi-static method), and bad
+// options refused with their name.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -71,6 +72,31 @@ TEST(CliStrength, SameTrialsOnAnyNumberOfRanks) {
       first = csv;
     else
       EXPECT_EQ(csv, first);  // loads, displacements, broken counts: bit for bit
+  }
+}
+
+// The quasi-static method on a small lattice runs on one rank while the others wait: every
+// number of ranks reports the same strength and trial, bit for bit.
+TEST(CliStrength, QuasiStaticSameOnAnyNumberOfRanks) {
+  std::string first, firstCsv;
+  for (int ranks : {1, 2, 3}) {
+    SCOPED_TRACE(ranks);
+    const std::string dir = freshDir("strength_qs_ranks_" + std::to_string(ranks));
+    const auto r = runPdq({"strength", plate(), "--set", "method=quasi_static"}, dir, ranks);
+    ASSERT_EQ(r.code, 0) << r.all();
+    const std::string out = dir + "/tension_x_out/strength";
+    const std::string report = readFile(out + "/strength.txt");
+    const auto at = report.find("strength: ");
+    ASSERT_NE(at, std::string::npos) << report;
+    const std::string line = report.substr(at, report.find('\n', at) - at);
+    const std::string csv = readFile(out + "/trials.csv");
+    EXPECT_TRUE(fs::exists(out + "/quasi_static/quasi_static.csv"));
+    if (first.empty()) {
+      first = line, firstCsv = csv;
+    } else {
+      EXPECT_EQ(line, first);
+      EXPECT_EQ(csv, firstCsv);
+    }
   }
 }
 

@@ -8,6 +8,8 @@
 //     tolerance;
 //   * past its peak under force control, the structure's failure is detected within a load
 //     step's first iterations and reported, never looped on.
+//   * a load step may take ten times the first load step's iterations when that is more than
+//     max_iterations, also after a restart.
 #include "quasi_static.hpp"
 
 #include <gmock/gmock.h>
@@ -16,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "engine/error.hpp"
@@ -205,6 +208,50 @@ TEST(QuasiStatic, PeakUnderForceControlIsDetectedAndReported) {
   EXPECT_THAT(reason, ::testing::HasSubstr("passed its peak load"));
   EXPECT_GT(test::global(*sim, "damaged"), 0);
   if (comm.root()) std::printf("stopped: %s\n", reason.c_str());
+}
+
+// A load step may take up to ten times the first load step's iterations even when that is
+// more than max_iterations (the first, elastic from rest, measures how slowly the lattice
+// relaxes), also in a run restarted after the first load step. With max_iterations set to
+// the first load step's iterations, the later load steps, which need more, converge exactly
+// as without a cap; capped at max_iterations they would be cut back.
+TEST(QuasiStatic, IterationCapScalesWithTheFirstLoadStep) {
+  const double scale = 120;
+  auto problem = [&](long maxIterations, const std::string& dir) {
+    RunConfig run;
+    run.solver = test::solver(1e-6, 3, maxIterations);
+    run.steps = 3;
+    run.loading.scale = scale;
+    run.outDir = dir;
+    Problem pb = makeProblem("mplm2d", test::params({}), test::smallBeam(), run);
+    pb.output.restartEvery = 1;
+    return pb;
+  };
+  auto runWith = [&](long maxIterations, const std::string& dir,
+                     std::optional<long> restartFrom = {}, const std::string& from = "") {
+    pdq::test::State s;
+    test::runOnRanks(
+        1, 1, [&](Comm&) { return problem(maxIterations, dir); }, from, restartFrom,
+        [&](Simulation& sim) { s = pdq::test::gatherState(sim); });
+    return s;
+  };
+  const pdq::test::State free = runWith(200000, "qs_cap_free");
+  const auto rows = test::loadStepRows("qs_cap_free");
+  ASSERT_EQ(rows.size(), 3u);
+  const long first = static_cast<long>(rows[0][2]);
+  ASSERT_GT(std::max(rows[1][2], rows[2][2]), rows[0][2])
+      << "the test needs a later load step slower than the first";
+  const pdq::test::State capped = runWith(first, "qs_cap_first");
+  const auto cappedRows = test::loadStepRows("qs_cap_first");
+  ASSERT_EQ(cappedRows.size(), 3u) << "a load step was cut back";
+  for (std::size_t k = 0; k < 3; ++k)
+    EXPECT_EQ(cappedRows[k][2], rows[k][2]) << "load step " << k + 1;
+  EXPECT_TRUE(capped == free);
+  const pdq::test::State resumed = runWith(first, "qs_cap_resumed", 1, "qs_cap_first");
+  EXPECT_TRUE(resumed == free) << "restarted after the first load step";
+  if (Comm().root())
+    std::printf("iteration cap: max_iterations %ld, load steps of %g, %g, %g iterations\n", first,
+                rows[0][2], rows[1][2], rows[2][2]);
 }
 
 }  // namespace
