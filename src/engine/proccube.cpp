@@ -39,10 +39,20 @@ ProcCube::ProcCube(const Decomposition& dec, Comm& comm, Particles& particles, B
     skin_[a] = dec_.active(a) ? 1 : 0;
     ext_[a] = dec_.coreCells(a) + 2 * skin_[a];
   }
+  // Cells are laid out with the axis of most cells slowest (Z, Y, X on ties): a particle's
+  // neighbours then sit closest in memory (a long member's X-neighbours a cross-section of
+  // cells away, not a plane of the whole length).
+  std::array<int, 3> axes{2, 1, 0};
+  std::stable_sort(axes.begin(), axes.end(), [&](int a, int b) { return ext_[a] > ext_[b]; });
+  int stride = 1;
+  for (int k = 2; k >= 0; --k) {
+    stride_[axes[k]] = stride;
+    stride *= ext_[axes[k]];
+  }
   for (int dz = -skin_[2]; dz <= skin_[2]; ++dz)
     for (int dy = -skin_[1]; dy <= skin_[1]; ++dy)
       for (int dx = -skin_[0]; dx <= skin_[0]; ++dx)
-        stencil_.push_back((dz * ext_[1] + dy) * ext_[0] + dx);
+        stencil_.push_back(dz * stride_[2] + dy * stride_[1] + dx * stride_[0]);
 }
 
 const double* ProcCube::binPosition(std::size_t i) const {
@@ -56,7 +66,7 @@ std::array<int, 3> ProcCube::globalCellOfPosition(const double* pos) const {
 int ProcCube::localCell(const std::array<int, 3>& g) const {
   int l[3];
   for (int a = 0; a < 3; ++a) l[a] = g[a] - dec_.coreLo(a) + skin_[a];
-  return (l[2] * ext_[1] + l[1]) * ext_[0] + l[0];
+  return l[2] * stride_[2] + l[1] * stride_[1] + l[0] * stride_[0];
 }
 
 void ProcCube::distribute(const std::vector<Gid>& gid, const std::vector<double>& fixed,

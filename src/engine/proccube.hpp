@@ -103,6 +103,7 @@ class ProcCube {
   Bonds& bonds_;
   bool byCurrent_;
   std::array<int, 3> ext_{}, skin_{};      // local cell extents (core + skin), skin width 0/1
+  std::array<int, 3> stride_{};            // a cell's index = Σ local cell coordinate × stride
   std::vector<int> stencil_;               // linear offsets of the neighbour cells
   std::vector<std::int32_t> cell_;         // local cell of each local particle
   std::vector<std::array<int, 3>> gcell_;  // global cell of each local particle (unwrapped)

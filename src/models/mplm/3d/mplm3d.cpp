@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -131,12 +132,12 @@ class Mplm3d final : public Model {
         const bool first = P.gid(i) < B.partnerGid(b);
         if (first && j < n)
           evals_.push_back(
-              {static_cast<std::uint32_t>(b), geoOf_[b],
+              {static_cast<std::uint32_t>(b), geoOf_[b], true,
                recvStart_[j] + static_cast<std::uint32_t>(reverse(B, j, P.gid(i)) - B.begin(j))});
         else if (first)
-          evals_.push_back({static_cast<std::uint32_t>(b), geoOf_[b], noRecord});
+          evals_.push_back({static_cast<std::uint32_t>(b), geoOf_[b], true, noRecord});
         else if (j >= n)
-          evals_.push_back({static_cast<std::uint32_t>(b), indexOf(reversed(k)),
+          evals_.push_back({static_cast<std::uint32_t>(b), indexOf(reversed(k)), false,
                             recvStart_[i] + static_cast<std::uint32_t>(b - B.begin(i))});
         gt += 2 * t.c;
         gr += 2 * t.cr;
@@ -195,20 +196,20 @@ class Mplm3d final : public Model {
             const Eval& v = evals_[e];
             const auto j = static_cast<std::uint32_t>(B.partner(v.bond));
             const auto self = static_cast<std::uint32_t>(i);
-            Received* rec = v.target == noRecord ? nullptr : &recv_[v.target];
-            if (P.gid(i) < B.partnerGid(v.bond))
-              lanes.push_back({self, j, v.geo, B.attr(v.bond), F, rec,
-                               rec ? B.attr(B.begin(j) + (v.target - recvStart_[j])) : nullptr});
+            if (v.first)
+              lanes.push_back({self, j, v.geo, v.target, B.attr(v.bond), F});
             else
-              lanes.push_back({j, self, v.geo, B.attr(v.bond), nullptr, rec, nullptr});
+              lanes.push_back({j, self, v.geo, v.target, B.attr(v.bond), nullptr});
           }
         }
         if constexpr (Corot)
-          corotLoads(P, lanes.data(), lanes.size());
+          corotLoads(P, B, lanes.data(), lanes.size());
         else
           for (const Lane& l : lanes) {
+            double before[N_BOND];
+            std::copy_n(l.state, N_BOND, before);
             const Loads q = smallLoads(P, geo_[l.geo], l.lo, l.hi, l.state);
-            deliver(l, q.f.data(), q.mi.data(), q.mj.data());
+            deliver(B, l, q.f.data(), q.mi.data(), q.mj.data(), changed(before, l.state));
           }
       }
     }
@@ -472,26 +473,34 @@ class Mplm3d final : public Model {
   }
 
   // One evaluation of an interaction: from particle lo to hi (lo has the smaller ID), its
-  // geometry as lo holds it, its state, and where its loads go: lo's force and moment
-  // (an owned lo), the record of hi's share (none for a ghost hi) and hi's copy of the state
-  // (an owned hi).
+  // geometry as lo holds it, the record that receives hi's share (noRecord: a ghost hi's),
+  // its state, and lo's force and moment (null: a ghost lo).
   struct Lane {
-    std::uint32_t lo, hi, geo;
+    std::uint32_t lo, hi, geo, target;
     double* state;
     double* sum;
-    Received* rec;
-    double* copy;
   };
+  // Whether an evaluation changed the interaction's state (bit for bit).
+  static bool changed(const double* before, const double* state) {
+    return std::memcmp(before, state, N_BOND * sizeof(double)) != 0;
+  }
   // Takes an evaluation's loads to their particles, in the order of the lanes: lo's sums
-  // are added to in its bond order.
-  static void deliver(const Lane& l, const double* f, const double* mi, const double* mj) {
+  // are added to in its bond order. An owned hi's copy of the state is written only when
+  // the evaluation changed it (both copies are equal before: set up alike, saved, restored
+  // and migrated together).
+  void deliver(Bonds& B, const Lane& l, const double* f, const double* mi, const double* mj,
+               bool stateChanged) {
     if (l.sum)
       for (int d = 0; d < 3; ++d) {
         l.sum[FORCE_X + d] += f[d];
         l.sum[MOMENT_X + d] += mi[d];
       }
-    if (l.rec) *l.rec = {{-f[0], -f[1], -f[2]}, {mj[0], mj[1], mj[2]}};
-    if (l.copy) std::copy_n(l.state, N_BOND, l.copy);
+    if (l.target == noRecord) return;
+    recv_[l.target] = {{-f[0], -f[1], -f[2]}, {mj[0], mj[1], mj[2]}};
+    if (l.sum && stateChanged) {
+      double* copy = B.attr(B.begin(l.hi) + (l.target - recvStart_[l.hi]));
+      for (int k = 0; k < N_BOND; ++k) copy[k] = l.state[k];
+    }
   }
   // Interactions evaluated side by side, one per lane: lane-wise the scalar form's operations
   // in the same order (interaction.hpp), so the same bits.
@@ -501,8 +510,9 @@ class Mplm3d final : public Model {
   // The co-rotational loads of `count` evaluations, `width` at a time, delivered; with AVX2 where
   // the processor has it (no FMA: the same roundings as without).
   [[gnu::flatten, gnu::target_clones("avx2", "default")]] void corotLoads(const Particles& P,
+                                                                          Bonds& B,
                                                                           const Lane* lanes,
-                                                                          std::size_t count) const {
+                                                                          std::size_t count) {
     for (std::size_t s = 0; s < count; s += width) {
       const Lane* ln[width];
       const double *ai[width], *aj[width], *Ri[width], *Rj[width];
@@ -536,9 +546,13 @@ class Mplm3d final : public Model {
       const Wide epsA = da * invL0;  // eq. 4.7
       const Wide curv = par_.law.beta * curvature<Wide>(ti, tj);
       Wide axialKeep, bendKeep, stretch;
+      bool stateChanged[width];
       for (int k = 0; k < width; ++k) {
+        double before[N_BOND];
+        std::copy_n(ln[k]->state, N_BOND, before);
         const mplm::Held h = damageStep(*t[k], par_.law, epsA[k], curv[k], da[k], g[k]->L0,
                                         ln[k]->state, s + k < count);
+        stateChanged[k] = changed(before, ln[k]->state);
         axialKeep[k] = h.axialKeep;
         bendKeep[k] = h.bendKeep;
         stretch[k] = h.stretch;
@@ -557,7 +571,7 @@ class Mplm3d final : public Model {
         const double fk[3] = {f[0][k], f[1][k], f[2][k]};
         const double mik[3] = {mi[0][k], mi[1][k], mi[2][k]};
         const double mjk[3] = {mj[0][k], mj[1][k], mj[2][k]};
-        deliver(*ln[k], fk, mik, mjk);
+        deliver(B, *ln[k], fk, mik, mjk, stateChanged[k]);
       }
     }
   }
@@ -730,10 +744,11 @@ class Mplm3d final : public Model {
   std::vector<Stiffness> types_;      // the distinct constants of the interactions
   std::vector<std::uint32_t> geoOf_;  // per bond (same index as ctx.bonds): its geometry
   // The interactions a particle evaluates, evals_[evalStart_[i]] to evals_[evalStart_[i + 1]]
-  // in bond order: its bond, the geometry as the end of smaller ID holds it, and the record
-  // that receives the share of the end of larger ID (noRecord: a ghost's).
+  // in bond order: its bond, the geometry as the end of smaller ID holds it, whether the
+  // particle is that end, and the record that receives the share of the end of larger ID
+  // (noRecord: a ghost's).
   struct Eval {
-    std::uint32_t bond, geo, target;
+    std::uint32_t bond, geo : 31, first : 1, target;
   };
   static constexpr std::uint32_t noRecord = std::numeric_limits<std::uint32_t>::max();
   std::vector<Eval> evals_;
