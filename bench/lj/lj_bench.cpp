@@ -2,7 +2,8 @@
 // (rc = 2.5, skin 0.3, dt = 0.005, energy-shifted), timed over the time loop only, as
 // LAMMPS's "Loop time". Prints one line of key=value pairs on rank 0.
 //
-//   mpirun -np R lj_bench CELLS STEPS      (4 CELLS^3 atoms)
+//   mpirun -np R lj_bench CELLS STEPS [DIVISIONS]   (4 CELLS^3 atoms; the model's
+//                                                    cell_divisions, default its own)
 #include <mpi.h>
 #include <omp.h>
 #include <time.h>
@@ -18,8 +19,8 @@
 
 int main(int argc, char** argv) {
   pdq::MpiSession mpi(&argc, &argv);
-  if (argc != 3) {
-    std::fprintf(stderr, "usage: lj_bench CELLS STEPS\n");
+  if (argc != 3 && argc != 4) {
+    std::fprintf(stderr, "usage: lj_bench CELLS STEPS [DIVISIONS]\n");
     return 2;
   }
   const int cells = std::atoi(argv[1]);
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
   p.set("skin", "0.3");
   p.set("dt", "0.005");
   p.set("shift", "energy");
+  if (argc == 4) p.set("cell_divisions", argv[3]);
   pdq::Problem pb = pdq::makeProblem("lj", p, {});
   pdq::ParticleSet& ps = pb.particles;
   pdq::FccSpec spec;

@@ -94,7 +94,7 @@ std::string summary(Simulation& sim, const std::string& modelName, const std::st
     const double minCell =
         sim.config().minCellSize > 0 ? sim.config().minCellSize : sim.model().horizon();
     const std::array<int, 3> asked = sim.config().procs;
-    Decomposition d(dom, minCell, asked, ranks, 0, source);
+    Decomposition d(dom, minCell, asked, ranks, 0, source, sim.model().cellDivisions());
     std::array<int, 3> p{}, c{};
     for (int a = 0; a < 3; ++a) {
       p[a] = d.procs(a);

@@ -38,12 +38,13 @@ class Context {
   const Integrator& integrator() const { return *integrator_; }
   int dim() const { return cube_.decomposition().dim(); }
   const Domain& domain() const { return cube_.decomposition().domain(); }
-  // The smallest cell edge: every pair closer than this is among a particle's nearby
-  // cells, and the engine shuffles before any particle moves more than
+  // The smallest cell edge (of undivided cells): every pair closer than this is among a
+  // particle's nearby cells, and the engine shuffles before any particle moves more than
   // (cellSize - horizon) / 2, so a pair list of this radius stays complete until then.
   double cellSize() const { return cube_.decomposition().minActiveCellSize(); }
 
-  // Every particle j near owned particle i (same or adjacent cell), canonical order.
+  // Every particle j near owned particle i (same or adjacent cell, or up to the model's
+  // cell divisions away), canonical order.
   template <class F>
   void forEachNearby(std::size_t i, F&& f) const {
     cube_.forEachNearby(i, std::forward<F>(f));

@@ -19,9 +19,10 @@ static int cellsAlong(double L, double minCellSize) {
 }
 
 Decomposition::Decomposition(const Domain& domain, double minCellSize, std::array<int, 3> nP,
-                             int nRanks, int rank, const std::string& source)
-    : dom_(domain) {
+                             int nRanks, int rank, const std::string& source, int divisions)
+    : dom_(domain), div_(nRanks > 1 ? divisions : 1) {  // one rank has no cuts to refine
   if (!(minCellSize > 0)) throw InputError(source, 0, "minimum cell size must be positive");
+  if (divisions < 1) throw InputError(source, 0, "cell divisions must be at least 1");
   for (int a = 0; a < 3; ++a) {
     const double L = dom_.length(a);
     if (!active(a)) {
@@ -38,6 +39,8 @@ Decomposition::Decomposition(const Domain& domain, double minCellSize, std::arra
         throw InputError(source, 0, os.str());
       }
     }
+    reach_[a] = L > 0 ? L / nGC_[a] : 1.0;
+    if (active(a)) nGC_[a] *= div_;
     cell_[a] = L > 0 ? L / nGC_[a] : 1.0;
   }
   const bool automatic = nP[0] <= 0 || nP[1] <= 0 || nP[2] <= 0;
@@ -50,7 +53,7 @@ Decomposition::Decomposition(const Domain& domain, double minCellSize, std::arra
         const int pz = nRanks / (px * py);
         const std::array<int, 3> p{px, py, pz};
         bool ok = true;
-        for (int a = 0; a < 3; ++a) ok &= p[a] <= nGC_[a] && (active(a) || p[a] == 1);
+        for (int a = 0; a < 3; ++a) ok &= p[a] * div_ <= nGC_[a] && (active(a) || p[a] == 1);
         if (!ok) continue;
         double cost = 0;
         for (int a = 0; a < 3; ++a) {
@@ -67,7 +70,7 @@ Decomposition::Decomposition(const Domain& domain, double minCellSize, std::arra
     if (!std::isfinite(best)) {
       std::ostringstream os;
       os << nRanks << " ranks do not fit a domain of " << nGC_[0] << " x " << nGC_[1] << " x "
-         << nGC_[2] << " cells (each rank needs at least one cell per active axis)";
+         << nGC_[2] << " cells (each rank needs at least " << div_ << " per active axis)";
       throw InputError(source, 0, os.str());
     }
   } else {
@@ -79,10 +82,10 @@ Decomposition::Decomposition(const Domain& domain, double minCellSize, std::arra
       throw InputError(source, 0, os.str());
     }
     for (int a = 0; a < 3; ++a) {
-      if (nP_[a] > nGC_[a]) {
+      if (nP_[a] * div_ > nGC_[a]) {
         std::ostringstream os;
         os << "processor grid has " << nP_[a] << " ranks along "
-           << "XYZ"[a] << " but the domain has only " << nGC_[a]
+           << "XYZ"[a] << " but the domain has only " << nGC_[a] / div_
            << " cells there (cell size >= " << minCellSize << ")";
         throw InputError(source, 0, os.str());
       }
@@ -106,11 +109,12 @@ void Decomposition::balance(const std::array<std::vector<double>, 3>& weights) {
     const double total = prefix[n];
     if (!(total > 0)) continue;
     // Cut c at the cell boundary whose prefix is nearest c/p of the total, leaving at least
-    // one cell to each core before and after it (of equal distances, the lower boundary).
+    // `divisions` cells to each core before and after it (of equal distances, the lower
+    // boundary).
     for (int c = 1; c < p; ++c) {
       const double target = total * c / p;
-      int best = cuts_[a][c - 1] + 1;
-      for (int b = best + 1; b <= n - (p - c); ++b)
+      int best = cuts_[a][c - 1] + div_;
+      for (int b = best + 1; b <= n - (p - c) * div_; ++b)
         if (std::fabs(prefix[b] - target) < std::fabs(prefix[best] - target)) best = b;
       cuts_[a][c] = best;
     }
@@ -121,7 +125,7 @@ void Decomposition::balance(const std::array<std::vector<double>, 3>& weights) {
 
 double Decomposition::minActiveCellSize() const {
   double m = std::numeric_limits<double>::infinity();
-  for (int a = 0; a < dim(); ++a) m = std::min(m, cell_[a]);
+  for (int a = 0; a < dim(); ++a) m = std::min(m, reach_[a]);
   return m;
 }
 

@@ -4,6 +4,12 @@
 // so the cell grid — and with it the order in which neighbours are visited — is the same
 // whatever the processor grid. A 2D problem has one cell layer in Z (a 1D one also one in
 // Y) and exchanges nothing along the inactive axes.
+//
+// Divisions: a model may ask for each cell of at least the minimum cell size to be cut
+// into k x k x k sub-cells; the lattice is then that of the sub-cells (cores are whole
+// sub-cells, so the cuts between ranks are k times finer), and neighbours are looked for
+// k sub-cells away, so the reach (k sub-cells, the whole cell) is what it was. A run on one
+// rank has no cuts and keeps whole cells (sub-cells would only make more of them to visit).
 #include <array>
 #include <string>
 #include <vector>
@@ -22,13 +28,18 @@ class Decomposition {
   // nP: processors per axis, 0 = choose automatically. Throws InputError (naming
   // `source`) when the grid does not fit the ranks or has more ranks than cells.
   Decomposition(const Domain& domain, double minCellSize, std::array<int, 3> nP, int nRanks,
-                int rank, const std::string& source = "processor grid");
+                int rank, const std::string& source = "processor grid", int divisions = 1);
 
   const Domain& domain() const { return dom_; }
   int dim() const { return dom_.dim; }
   bool active(int a) const { return a < dom_.dim; }
   int globalCells(int a) const { return nGC_[a]; }
   double cellSize(int a) const { return cell_[a]; }
+  int divisions() const { return div_; }
+  // The edge of `divisions` cells (the undivided cell): every pair closer than this is
+  // among the cells `divisions` away.
+  double reach(int a) const { return reach_[a]; }
+  // The smallest reach of an active axis.
   double minActiveCellSize() const;
   // The smallest cell edge a decomposition of `domain` with this minimum cell size has.
   static double minActiveCellSize(const Domain& domain, double minCellSize);
@@ -51,7 +62,7 @@ class Decomposition {
 
   // Moves the cuts between the cores along each active axis so that the cores hold about
   // equal weight (weights[a][g]: the particles in the layer of cells g along a; each core
-  // keeps at least one cell). The cell lattice, and with it every result, stays the same;
+  // keeps at least `divisions` cells). The cell lattice, and with it every result, stays the same;
   // without it the cores have equal numbers of cells. The same weights give the same cuts
   // on every rank.
   void balance(const std::array<std::vector<double>, 3>& weights);
@@ -60,7 +71,8 @@ class Decomposition {
   Domain dom_;
   std::array<int, 3> nGC_{1, 1, 1}, nP_{1, 1, 1}, me_{0, 0, 0}, lo_{}, hi_{};
   std::array<std::vector<int>, 3> cuts_;  // first cell of each core along each axis, then nGC
-  std::array<double, 3> cell_{};
+  std::array<double, 3> cell_{}, reach_{};
+  int div_ = 1;
 };
 
 }  // namespace pdq

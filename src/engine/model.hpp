@@ -58,6 +58,9 @@ class Model {
   // The minimum cell size when the input sets none: the horizon, or more for a model that
   // keeps pair lists with a skin (cells >= cut-off + skin).
   virtual double minCellSize() const { return horizon(); }
+  // Each cell of at least the minimum cell size cut into k x k x k sub-cells (decomposition.hpp):
+  // the cuts between ranks k times finer, the reach the same.
+  virtual int cellDivisions() const { return 1; }
   // True when particles change neighbours (molecular dynamics): the engine then shuffles
   // particles between cells and ranks, and bins them by current position.
   virtual bool shuffles() const { return false; }

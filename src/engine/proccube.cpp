@@ -36,7 +36,7 @@ ProcCube::ProcCube(const Decomposition& dec, Comm& comm, Particles& particles, B
                    bool binByCurrentPosition)
     : dec_(dec), comm_(comm), p_(particles), bonds_(bonds), byCurrent_(binByCurrentPosition) {
   for (int a = 0; a < 3; ++a) {
-    skin_[a] = dec_.active(a) ? 1 : 0;
+    skin_[a] = dec_.active(a) ? dec_.divisions() : 0;
     ext_[a] = dec_.coreCells(a) + 2 * skin_[a];
   }
   // Cells are laid out with the axis of most cells slowest (Z, Y, X on ties): a particle's
@@ -142,11 +142,13 @@ void ProcCube::borderPass() {
   for (int a = 0; a < dec_.dim(); ++a) {
     for (int dir : {+1, -1}) {
       Direction d{a, dir, dec_.neighbour(a, dir), dec_.neighbour(a, -dir), dec_.wraps(a, dir), {}};
-      const int wall = dir > 0 ? dec_.coreHi(a) - 1 : dec_.coreLo(a);
+      // The wall: the core's last `skin` cell layers on the side it sends to.
+      const int wallLo = dir > 0 ? dec_.coreHi(a) - skin_[a] : dec_.coreLo(a),
+                wallHi = wallLo + skin_[a];
       out.clear();
       if (d.dest >= 0) {
         for (std::size_t i = 0; i < p_.local(); ++i) {
-          if (gcell_[i][a] != wall) continue;
+          if (gcell_[i][a] < wallLo || gcell_[i][a] >= wallHi) continue;
           d.send.push_back(static_cast<std::uint32_t>(i));
           std::array<int, 3> g = gcell_[i];
           std::copy_n(p_.fixed(i), nF, f.begin());
@@ -339,13 +341,12 @@ void ProcCube::migrate(long step) {
     double* x = p_.alter(i);
     double* f = p_.fixed(i);
     for (int a = 0; a < dec_.dim(); ++a) {
-      if (i < rebuildPos_.size() / 3 &&
-          std::fabs(x[a] - rebuildPos_[3 * i + a]) > dec_.cellSize(a)) {
+      if (i < rebuildPos_.size() / 3 && std::fabs(x[a] - rebuildPos_[3 * i + a]) > dec_.reach(a)) {
         std::ostringstream os;
         os << "step " << step << ": particle " << p_.gid(i) << " moved "
            << std::fabs(x[a] - rebuildPos_[3 * i + a]) << " along "
            << "XYZ"[a] << " since the last shuffle, further than the skin (one cell, "
-           << dec_.cellSize(a) << "); the time step is too large or the system is unstable";
+           << dec_.reach(a) << "); the time step is too large or the system is unstable";
         throw RunError(os.str());
       }
       if (!std::isfinite(x[a])) {

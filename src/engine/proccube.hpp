@@ -1,6 +1,7 @@
 #pragma once
-// The procCube of one rank: its core cells (owned particles) and the one-cell skin around
-// them (ghost copies of the neighbours' wall cells), with
+// The procCube of one rank: its core cells (owned particles) and the skin around them, one
+// cell deep or as many as the decomposition's divisions (ghost copies of the neighbours'
+// wall cells), with
 //   * the border pass, which rebuilds the skin with Plimpton's six steps Xp, Xn, Yp, Yn,
 //     Zp, Zn — later steps forward what earlier ones received, so edges and corners
 //     arrive without diagonal messages — and records the exchange plan;
@@ -102,7 +103,7 @@ class ProcCube {
   Particles& p_;
   Bonds& bonds_;
   bool byCurrent_;
-  std::array<int, 3> ext_{}, skin_{};      // local cell extents (core + skin), skin width 0/1
+  std::array<int, 3> ext_{}, skin_{};      // local cell extents (core + skin), skin depth
   std::array<int, 3> stride_{};            // a cell's index = Σ local cell coordinate × stride
   std::vector<int> stencil_;               // linear offsets of the neighbour cells
   std::vector<std::int32_t> cell_;         // local cell of each local particle

@@ -164,7 +164,7 @@ void Simulation::setup() {
     throw InputError(cfg_.source, 0, os.str());
   }
   dec_ = std::make_unique<Decomposition>(makeDomain(), minCell, cfg_.procs, comm_.size(),
-                                         comm_.rank(), cfg_.source);
+                                         comm_.rank(), cfg_.source, model_->cellDivisions());
   {
     // Cores of equal particle counts rather than equal cell counts (every rank holds every
     // particle here, so all find the same cuts).

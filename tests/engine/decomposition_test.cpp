@@ -85,5 +85,33 @@ TEST(Decomposition, TooManyRanksIsAClearError) {
   EXPECT_THROW(Decomposition(box(3, 3, 3, 3), 1.0, {2, 1, 1}, 4, 0), InputError);
 }
 
+TEST(Decomposition, DivisionsCutCellsAndKeepTheReach) {
+  // 11 cells of 1.1 (at least 1.05) along X; two ranks cut whole cells 5 | 6 (by equal weights of a
+  // uniform fill), halves of them 11 | 11.
+  const Domain d = box(12.1, 3.3, 3.3, 3);
+  for (int div : {1, 2}) {
+    std::array<int, 2> core{};
+    for (int r = 0; r < 2; ++r) {
+      Decomposition dec(d, 1.05, {2, 1, 1}, 2, r, "test", div);
+      EXPECT_EQ(dec.globalCells(0), 11 * div);
+      EXPECT_EQ(dec.globalCells(1), 3 * div);
+      EXPECT_DOUBLE_EQ(dec.cellSize(0), 1.1 / div);
+      EXPECT_EQ(dec.reach(0), 12.1 / 11);  // the same bits whatever the divisions
+      EXPECT_EQ(dec.minActiveCellSize(), 12.1 / 11);
+      std::array<std::vector<double>, 3> w;
+      w[0].assign(dec.globalCells(0), 1.0);
+      dec.balance(w);
+      core[r] = dec.coreCells(0);
+    }
+    EXPECT_EQ(core[0] + core[1], 11 * div);
+    EXPECT_EQ(std::abs(core[0] - core[1]), div == 1 ? 1 : 0);
+  }
+  // One rank has no cuts: whole cells.
+  EXPECT_EQ(Decomposition(d, 1.05, {1, 1, 1}, 1, 0, "test", 2).globalCells(0), 11);
+  // Each rank needs a whole cell (divisions sub-cells) along each axis it is cut along.
+  EXPECT_THROW(Decomposition(box(3.3, 3.3, 3.3, 3), 1.05, {4, 1, 1}, 4, 0, "test", 2), InputError);
+  EXPECT_NO_THROW(Decomposition(box(3.3, 3.3, 3.3, 3), 1.05, {3, 1, 1}, 3, 0, "test", 2));
+}
+
 }  // namespace
 }  // namespace pdq

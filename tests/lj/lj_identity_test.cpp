@@ -1,6 +1,7 @@
 // Bitwise identity: the same Lennard-Jones melt (1372 atoms, 100 steps, with shuffles and
 // migration) run on 1 rank with 1 and 2 OpenMP threads, on 2 and 3 ranks and on 4 ranks
-// with several processor grids ends in the same bits — positions, velocities and the
+// with several processor grids, and on 2 ranks with cells cut into 1, 8 (the model's
+// default) or 27 sub-cells, ends in the same bits — positions, velocities and the
 // global energies. Each run uses a sub-communicator of the ranks this test was started
 // on; runs on disjoint ranks go side by side, and world rank 0 compares every run's final
 // state with the first.
@@ -20,10 +21,12 @@ struct Config {
   int first, ranks;  // world ranks first .. first + ranks - 1
   std::array<int, 3> grid;
   int threads;
+  int divisions = 0;  // the model's cell_divisions; 0: its default
   std::string describe() const {
     std::ostringstream os;
     os << ranks << " rank(s), grid " << grid[0] << "x" << grid[1] << "x" << grid[2] << " ("
        << (grid[0] ? "given" : "automatic") << "), " << threads << " thread(s)";
+    if (divisions) os << ", cell divisions " << divisions;
     return os.str();
   }
 };
@@ -41,7 +44,10 @@ Outcome simulate(const Config& r, MPI_Comm sub) {
     m.cells = 7;  // 4 cells of 2.94 per axis: room for 4 ranks along one axis
     m.steps = 100;
     m.procs = r.grid;
+    m.divisions = r.divisions;
     auto sim = ljtest::makeMelt(m, comm);
+    const int along = sim->decomposition().globalCells(0) / 4;  // 4 whole cells
+    EXPECT_EQ(along, r.ranks == 1 ? 1 : r.divisions ? r.divisions : 2) << r.describe();
     while (sim->advance()) {
     }
     EXPECT_GT(sim->stats().shuffles, 5u);
@@ -82,6 +88,7 @@ TEST(LjIdentity, SameBitsOnAnyRankCountGridAndThreadCount) {
   const std::vector<std::vector<Config>> rounds = {
       {{0, 1, {1, 1, 1}, 1}, {1, 1, {1, 1, 1}, 2}},
       {{0, 2, {0, 0, 0}, 1}, {2, 2, {1, 2, 1}, 2}},
+      {{0, 2, {2, 1, 1}, 1, 1}, {2, 2, {2, 1, 1}, 1, 3}},
       {{0, 3, {3, 1, 1}, 1}},
       {{0, 4, {4, 1, 1}, 1}},
       {{0, 4, {2, 2, 1}, 1}},
@@ -105,7 +112,7 @@ TEST(LjIdentity, SameBitsOnAnyRankCountGridAndThreadCount) {
     EXPECT_EQ(0, std::memcmp(o.data(), ref.data(), ref.size() * sizeof(double)))
         << run.describe() << " differs from " << done.front().first.describe();
   }
-  EXPECT_EQ(done.size(), size >= 4 ? 8u : size >= 2 ? 3u : 1u);
+  EXPECT_EQ(done.size(), size >= 4 ? 10u : size >= 2 ? 4u : 1u);
 }
 
 }  // namespace

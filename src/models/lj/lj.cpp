@@ -3,8 +3,10 @@
 //
 //   neighbours   half Verlet lists (verlet_list.hpp) of radius one cell edge, rebuilt after
 //                every engine shuffle. The model's horizon is rc and it asks for cells of
-//                at least rc + skin; the engine shuffles once some particle moved more
-//                than (cell - rc) / 2 since the last rebuild.
+//                at least rc + skin, each cut in two along each axis (cell_divisions), so
+//                that the cuts between ranks are half a cell fine (on more than one rank);
+//                the engine shuffles once some particle moved more than (cell - rc) / 2
+//                since the last rebuild.
 //   force        each pair once (Newton's third law between owned particles; a pair with
 //                a ghost is computed by each side's rank), summed exactly (kernel.hpp), so
 //                the bits do not depend on the order of the pairs, hence on neither the
@@ -43,6 +45,8 @@ class LennardJones final : public Model {
     const double rc = p.number("cutoff", 2.5, 1e-300, 1e300);
     skin_ = p.number("skin", 0.3, 0.0, 1e300);
     dt_ = p.number("dt", 0.005, 1e-300, 1e300);
+    p.integer("cell_divisions", 2);  // a whole number (error otherwise) ...
+    divisions_ = static_cast<int>(p.number("cell_divisions", 2, 1, 4));  // ... in [1, 4]
     const std::string s = p.choice("shift", "energy", {"none", "energy", "force"});
     const Shift shift = s == "none" ? Shift::None : s == "energy" ? Shift::Energy : Shift::Force;
     pair_ = PairLJ(epsilon, sigma, rc, shift);
@@ -62,6 +66,7 @@ class LennardJones final : public Model {
   }
   double horizon() const override { return pair_.rc; }
   double minCellSize() const override { return pair_.rc + skin_; }
+  int cellDivisions() const override { return divisions_; }
   bool shuffles() const override { return true; }
   bool bondsWithinHorizon() const override { return false; }  // pair lists, no bonds
 
@@ -191,6 +196,7 @@ class LennardJones final : public Model {
   Grid forceGrid_, energyGrid_;
   double closest_ = 0;  // closest pair allowed
   double mass_ = 1, skin_ = 0.3, dt_ = 0.005;
+  int divisions_ = 2;
   VerletList lists_;
   std::vector<double> energy_;
   mutable std::vector<KernelScratch> scratch_;  // one per OpenMP thread

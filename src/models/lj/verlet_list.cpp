@@ -6,8 +6,21 @@
 
 namespace pdq::lj {
 
+std::size_t keepNear(const double* cx, const double* cy, const double* cz, const std::uint32_t* id,
+                     std::size_t from, std::size_t to, double x, double y, double z, double r2max,
+                     std::uint32_t* out) {
+  std::size_t m = 0;
+  for (std::size_t k = from; k < to; ++k) {
+    const double dx = cx[k] - x, dy = cy[k] - y, dz = cz[k] - z;
+    out[m] = id[k];
+    m += dx * dx + dy * dy + dz * dz < r2max;
+  }
+  return m;
+}
+
 void VerletList::build(const Context& ctx, const double* pos, std::size_t stride, double radius) {
   const std::size_t n = ctx.particles.owned();
+  static const bool v4 = __builtin_cpu_supports("x86-64-v4");
 
   const double r2max = radius * radius;
   start_.assign(n + 1, 0);
@@ -39,36 +52,24 @@ void VerletList::build(const Context& ctx, const double* pos, std::size_t stride
         s.owned = s.near.size();
         s.near.insert(s.near.end(), s.ghost.begin(), s.ghost.end());
         const std::size_t nc = s.near.size();
-        s.xyz.resize(4 * nc);
+        s.xyz.resize(3 * nc);
         for (std::size_t k = 0; k < nc; ++k)
           for (int a = 0; a < 3; ++a) s.xyz[a * nc + k] = pos[s.near[k] * stride + a];
         next = 0;
       }
       while (next < s.owned && s.near[next] <= i) ++next;
       const double* xi = pos + i * stride;
-      const double x = xi[0], y = xi[1], z = xi[2];
-      // Distances first (a loop the compiler vectorises), then the kept ones without
-      // branches: owned partners of higher index, then ghosts.
+      // Owned partners of higher index, then ghosts, those within the radius.
       const std::size_t nc = s.near.size();
       const double *cx = s.xyz.data(), *cy = cx + nc, *cz = cy + nc;
-      double* d2 = s.xyz.data() + 3 * nc;
-      for (std::size_t k = next; k < nc; ++k) {
-        const double dx = cx[k] - x, dy = cy[k] - y, dz = cz[k] - z;
-        d2[k] = dx * dx + dy * dy + dz * dz;
-      }
       const std::size_t at = s.out.size();
-      s.out.resize(at + nc - next);
+      s.out.resize(at + nc - next + 8);
       std::uint32_t* o = s.out.data() + at;
-      std::size_t m = 0;
-      for (std::size_t k = next; k < s.owned; ++k) {
-        o[m] = s.near[k];
-        m += d2[k] < r2max;
-      }
-      const std::size_t owned = m;
-      for (std::size_t k = s.owned; k < nc; ++k) {
-        o[m] = s.near[k];
-        m += d2[k] < r2max;
-      }
+      const auto keep = v4 ? keepNearAvx512 : keepNear;
+      const std::size_t owned =
+          keep(cx, cy, cz, s.near.data(), next, s.owned, xi[0], xi[1], xi[2], r2max, o);
+      const std::size_t m = owned + keep(cx, cy, cz, s.near.data(), s.owned, nc, xi[0], xi[1],
+                                         xi[2], r2max, o + owned);
       s.out.resize(at + m);
       s.count[2 * (i - lo)] = m;
       s.count[2 * (i - lo) + 1] = owned;

@@ -18,6 +18,16 @@
 
 namespace pdq::lj {
 
+// Appends to `out` the candidates k in [from, to) (positions cx, cy, cz; indices id) closer
+// to (x, y, z) than sqrt(r2max), returns how many. May write 8 entries past them.
+std::size_t keepNear(const double* cx, const double* cy, const double* cz, const std::uint32_t* id,
+                     std::size_t from, std::size_t to, double x, double y, double z, double r2max,
+                     std::uint32_t* out);
+// The same in AVX-512 (avx512.cpp), for processors that have it (x86-64-v4).
+std::size_t keepNearAvx512(const double* cx, const double* cy, const double* cz,
+                           const std::uint32_t* id, std::size_t from, std::size_t to, double x,
+                           double y, double z, double r2max, std::uint32_t* out);
+
 class VerletList {
  public:
   // pos: packed positions of the local particles, `stride` doubles a row (x, y, z first).
