@@ -67,32 +67,54 @@ double cpuSeconds() {
 
 // The time of the steps, setup excluded: wall clock and the busiest rank's CPU time (on a
 // shared machine the CPU time is the work done; the wall clock also counts waiting for a core).
+// Per rank: its own CPU and wall time, messages sent, page faults and context switches.
 struct RunTime {
   double wall, cpu, cpuSum, cpuMine;  // cpu: the busiest rank's; cpuSum: every rank's
+  double wallMine = 0;
+  std::uint64_t messages = 0;
+  long faults = 0, voluntary = 0, involuntary = 0;
 };
 
 RunTime timedRun(Simulation& sim, Comm& comm) {
   sim.setup();
   comm.barrier();
+  rusage u0{}, u1{};
+  getrusage(RUSAGE_SELF, &u0);
+  const std::uint64_t m0 = comm.messages();
   const double t0 = MPI_Wtime(), c0 = cpuSeconds();
   while (sim.advance()) {
   }
-  const double mine = cpuSeconds() - c0;
+  const double mine = cpuSeconds() - c0, wallMine = MPI_Wtime() - t0;
+  getrusage(RUSAGE_SELF, &u1);
   const double cpu = comm.max(mine);
   ExactSum acc;
   acc.add(mine);
   const double sum = comm.sum(acc);
   const double t = comm.max(MPI_Wtime() - t0);
   sim.finish();
-  return {t, cpu, sum, mine};
+  RunTime rt{t, cpu, sum, mine};
+  rt.wallMine = wallMine;
+  rt.messages = comm.messages() - m0;
+  rt.faults = u1.ru_minflt - u0.ru_minflt + u1.ru_majflt - u0.ru_majflt;
+  rt.voluntary = u1.ru_nvcsw - u0.ru_nvcsw;
+  rt.involuntary = u1.ru_nivcsw - u0.ru_nivcsw;
+  return rt;
 }
 
-// One line per rank: its owned particles and the CPU seconds of its steps by phase.
+// One line per rank: its owned particles, the CPU seconds of its steps by phase, then the
+// wall seconds of the phases, messages, page faults and context switches of the steps.
 void printRankCpu(Simulation& sim, const RunTime& rt, Comm& comm) {
-  char head[96];
+  char head[96], tail[320];
   std::snprintf(head, sizeof head, "  rank=%d owned=%zu ghosts=%zu cpu=%.3f ", comm.rank(),
                 sim.particles().owned(), sim.particles().ghosts(), rt.cpuMine);
-  const std::string line = head + cpuBreakdown(sim.timers(), rt.cpuMine) + "\n";
+  const Timers& t = sim.timers();
+  std::snprintf(tail, sizeof tail,
+                " | wall=%.3f force=%.3f integrate=%.3f communication=%.3f messages=%llu "
+                "faults=%ld csw=%ld/%ld\n",
+                rt.wallMine, t[Phase::Force], t[Phase::Integrate], t[Phase::Communication],
+                static_cast<unsigned long long>(rt.messages), rt.faults, rt.voluntary,
+                rt.involuntary);
+  const std::string line = head + cpuBreakdown(t, rt.cpuMine) + tail;
   auto blocks = comm.gather(std::vector<char>(line.begin(), line.end()));
   if (comm.root())
     for (auto& b : blocks) std::fwrite(b.data(), 1, b.size(), stdout);

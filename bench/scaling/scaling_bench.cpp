@@ -19,7 +19,9 @@
 //                                          particles per cell and Plimpton's six steps; with
 //                                          N > 0 the same member at N particles (cells
 //                                          shrunk by (N/particles)^(1/dim), each fine cell
-//                                          holding what its coarse cell held)
+//                                          holding what its coarse cell held); cells as the
+//                                          engine takes them (fewer along a cut axis when
+//                                          the model's results allow, Model::resultsDependOnCells)
 // Lines are `key=value` pairs for the script.
 #include <algorithm>
 #include <array>
@@ -107,6 +109,7 @@ class CpuTimedModel : public Model {
   double horizon() const override { return m_->horizon(); }
   double minCellSize() const override { return m_->minCellSize(); }
   bool shuffles() const override { return m_->shuffles(); }
+  bool resultsDependOnCells() const override { return m_->resultsDependOnCells(); }
   void setup(Context& ctx) override { m_->setup(ctx); }
   void prepare(Context& ctx) override { m_->prepare(ctx); }
   void neighboursChanged(Context& ctx) override { m_->neighboursChanged(ctx); }
@@ -312,17 +315,45 @@ int geometry(int argc, char** argv, Comm& comm) {
         layers[1][y] += v;
         layers[2][z] += v;
       }
+  // A model whose results do not depend on the cells lets the engine take fewer cells along
+  // an axis cut among cores (Decomposition::chooseCells), from the particles themselves.
+  const bool cellsFree = !moving && !sim->model().resultsDependOnCells() && target <= 0;
+  auto cellOf = [&](std::size_t i, int a, int n) {
+    const double* x = P.fixed(i);
+    const int g = static_cast<int>(std::floor((x[a] - dom.lo[a]) / (dom.length(a) / n)));
+    return std::clamp(g, 0, n - 1);
+  };
+  auto layerWeights = [&](int a, int n) {
+    std::vector<double> w(n, 0.0);
+    for (std::size_t i = 0; i < P.owned(); ++i) w[cellOf(i, a, n)] += 1;
+    return w;
+  };
   for (int k = 4; k < argc; ++k) {
     const int ranks = std::stoi(argv[k]);
     RankLoad busiest;
     double ownedMax = 0, wallMax = 0, wallSum = 0;
     int messagesMax = 0;
     std::array<int, 3> grid{};
+    CellCounts cells = fine;
+    std::array<std::vector<double>, 3> weights = layers;
+    if (cellsFree) {
+      Decomposition d(dom, minCell, sim->config().procs, ranks, 0);
+      d.chooseCells(layerWeights);
+      for (int a = 0; a < 3; ++a) cells.n[a] = d.globalCells(a);
+      cells.count.assign(static_cast<std::size_t>(cells.n[0]) * cells.n[1] * cells.n[2], 0);
+      for (std::size_t i = 0; i < P.owned(); ++i) {
+        std::array<int, 3> c{0, 0, 0};
+        for (int a = 0; a < dec.dim(); ++a) c[a] = cellOf(i, a, cells.n[a]);
+        cells.count[(static_cast<std::size_t>(c[2]) * cells.n[1] + c[1]) * cells.n[0] + c[0]] += 1;
+      }
+      for (int a = 0; a < dec.dim(); ++a) weights[a] = layerWeights(a, cells.n[a]);
+    }
     for (int r = 0; r < ranks; ++r) {
       Decomposition d(dom, minCell, sim->config().procs, ranks, r);
-      d.balance(layers);
+      if (cellsFree) d.chooseCells(layerWeights);
+      d.balance(weights);
       grid = {d.procs(0), d.procs(1), d.procs(2)};
-      const RankLoad l = loadOf(d, fine, r);
+      const RankLoad l = loadOf(d, cells, r);
       ownedMax = std::max(ownedMax, l.owned);
       wallMax = std::max(wallMax, l.wall);
       wallSum += l.wall;
@@ -332,9 +363,9 @@ int geometry(int argc, char** argv, Comm& comm) {
     std::printf(
         "ranks=%d grid=%dx%dx%d cells_per_rank=%dx%dx%d owned_max=%.0f wall_max=%.0f "
         "wall_mean=%.0f messages_max=%d\n",
-        ranks, grid[0], grid[1], grid[2], (fine.n[0] + grid[0] - 1) / grid[0],
-        (fine.n[1] + grid[1] - 1) / grid[1], (fine.n[2] + grid[2] - 1) / grid[2], ownedMax, wallMax,
-        wallSum / ranks, messagesMax);
+        ranks, grid[0], grid[1], grid[2], (cells.n[0] + grid[0] - 1) / grid[0],
+        (cells.n[1] + grid[1] - 1) / grid[1], (cells.n[2] + grid[2] - 1) / grid[2], ownedMax,
+        wallMax, wallSum / ranks, messagesMax);
   }
   return 0;
 }

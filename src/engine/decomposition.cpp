@@ -100,24 +100,64 @@ Decomposition::Decomposition(const Domain& domain, double minCellSize, std::arra
   }
 }
 
+// Cuts p cores along one axis from the layers' weight prefix: cut c at the cell boundary
+// whose prefix is nearest c/p of the total, leaving at least `div` cells to each core
+// before and after it (of equal distances, the lower boundary). cuts[0] and cuts[p] stay.
+static void cutAtWeights(const std::vector<double>& prefix, int p, int div,
+                         std::vector<int>& cuts) {
+  const int n = static_cast<int>(prefix.size()) - 1;
+  const double total = prefix[n];
+  for (int c = 1; c < p; ++c) {
+    const double target = total * c / p;
+    int best = cuts[c - 1] + div;
+    for (int b = best + 1; b <= n - (p - c) * div; ++b)
+      if (std::fabs(prefix[b] - target) < std::fabs(prefix[best] - target)) best = b;
+    cuts[c] = best;
+  }
+}
+
+static std::vector<double> prefixOf(const std::vector<double>& w) {
+  std::vector<double> prefix(w.size() + 1, 0);
+  for (std::size_t g = 0; g < w.size(); ++g) prefix[g + 1] = prefix[g] + w[g];
+  return prefix;
+}
+
 void Decomposition::balance(const std::array<std::vector<double>, 3>& weights) {
   for (int a = 0; a < dim(); ++a) {
     const int n = nGC_[a], p = nP_[a];
     if (p == 1 || static_cast<int>(weights[a].size()) != n) continue;
-    std::vector<double> prefix(n + 1, 0);
-    for (int g = 0; g < n; ++g) prefix[g + 1] = prefix[g] + weights[a][g];
-    const double total = prefix[n];
-    if (!(total > 0)) continue;
-    // Cut c at the cell boundary whose prefix is nearest c/p of the total, leaving at least
-    // `divisions` cells to each core before and after it (of equal distances, the lower
-    // boundary).
-    for (int c = 1; c < p; ++c) {
-      const double target = total * c / p;
-      int best = cuts_[a][c - 1] + div_;
-      for (int b = best + 1; b <= n - (p - c) * div_; ++b)
-        if (std::fabs(prefix[b] - target) < std::fabs(prefix[best] - target)) best = b;
-      cuts_[a][c] = best;
+    const std::vector<double> prefix = prefixOf(weights[a]);
+    if (!(prefix[n] > 0)) continue;
+    cutAtWeights(prefix, p, div_, cuts_[a]);
+    lo_[a] = cuts_[a][me_[a]];
+    hi_[a] = cuts_[a][me_[a] + 1];
+  }
+}
+
+void Decomposition::chooseCells(
+    const std::function<std::vector<double>(int axis, int cells)>& layers) {
+  for (int a = 0; a < dim(); ++a) {
+    const int most = nGC_[a], p = nP_[a];
+    if (p == 1 || div_ != 1) continue;  // sub-cells belong to models whose cells matter
+    const int fewest = std::max({p, dom_.periodic[a] ? 3 : 1, (4 * most + 4) / 5});
+    int best = most;
+    double lightest = std::numeric_limits<double>::infinity();
+    for (int n = most; n >= fewest; --n) {
+      const std::vector<double> prefix = prefixOf(layers(a, n));
+      std::vector<int> cuts(p + 1);
+      for (int c = 0; c <= p; ++c) cuts[c] = firstCell(c, n, p);
+      cutAtWeights(prefix, p, 1, cuts);
+      double heaviest = 0;
+      for (int c = 0; c < p; ++c)
+        heaviest = std::max(heaviest, prefix[cuts[c + 1]] - prefix[cuts[c]]);
+      if (heaviest < lightest) {
+        lightest = heaviest;
+        best = n;
+      }
     }
+    nGC_[a] = best;
+    cell_[a] = dom_.length(a) / best;
+    for (int c = 0; c <= p; ++c) cuts_[a][c] = firstCell(c, best, p);
     lo_[a] = cuts_[a][me_[a]];
     hi_[a] = cuts_[a][me_[a] + 1];
   }

@@ -11,6 +11,7 @@
 // k sub-cells away, so the reach (k sub-cells, the whole cell) is what it was. A run on one
 // rank has no cuts and keeps whole cells (sub-cells would only make more of them to visit).
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -66,6 +67,13 @@ class Decomposition {
   // without it the cores have equal numbers of cells. The same weights give the same cuts
   // on every rank.
   void balance(const std::array<std::vector<double>, 3>& weights);
+  // For a model whose results do not depend on the cell lattice (bonds are its only
+  // neighbours): along each axis cut among several cores, takes the cell count, from the
+  // most that fit down to 4/5 of them, whose cores cut as `balance` cuts them leave the
+  // heaviest core the least weight (of equal ones, the most cells). `layers(a, n)`: the
+  // weight of each of n layers of cells along a. The same weights give the same cells on
+  // every rank; call before `balance`.
+  void chooseCells(const std::function<std::vector<double>(int axis, int cells)>& layers);
 
  private:
   Domain dom_;

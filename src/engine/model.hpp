@@ -67,6 +67,11 @@ class Model {
   // True when setup bonds the particles within the horizon (of the lattice, as `pdq info`
   // estimates them before any particle exists); false for a model without bonds.
   virtual bool bondsWithinHorizon() const { return true; }
+  // True when results depend on the cell lattice (the model visits neighbours through the
+  // cells after setup, in the cells' order). A model whose only neighbours are its bonds
+  // (sorted by partner ID) says false; the engine may then take fewer, larger cells to
+  // balance the ranks better.
+  virtual bool resultsDependOnCells() const { return true; }
 
   virtual void setup(Context&) {}
   virtual void prepare(Context&) {}

@@ -167,16 +167,21 @@ void Simulation::setup() {
                                          comm_.rank(), cfg_.source, model_->cellDivisions());
   {
     // Cores of equal particle counts rather than equal cell counts (every rank holds every
-    // particle here, so all find the same cuts).
-    std::array<std::vector<double>, 3> weights;
-    for (int a = 0; a < dec_->dim(); ++a) weights[a].assign(dec_->globalCells(a), 0.0);
-    for (std::size_t k = 0; k < initial_.size(); ++k) {
-      const double* x = model_->shuffles() ? initial_.alterRow(k) : initial_.fixedRow(k);
-      for (int a = 0; a < dec_->dim(); ++a) {
-        const int n = dec_->globalCells(a), g = dec_->globalCell(a, x[a]);
-        weights[a][dec_->domain().periodic[a] ? ((g % n) + n) % n : std::clamp(g, 0, n - 1)] += 1;
+    // particle here, so all find the same cells and cuts).
+    const Domain& dom = dec_->domain();
+    auto layers = [&](int a, int n) {
+      std::vector<double> w(n, 0.0);
+      const double cell = dom.length(a) / n;
+      for (std::size_t k = 0; k < initial_.size(); ++k) {
+        const double* x = model_->shuffles() ? initial_.alterRow(k) : initial_.fixedRow(k);
+        const int g = static_cast<int>(std::floor((x[a] - dom.lo[a]) / cell));
+        w[dom.periodic[a] ? ((g % n) + n) % n : std::clamp(g, 0, n - 1)] += 1;
       }
-    }
+      return w;
+    };
+    if (!model_->shuffles() && !model_->resultsDependOnCells()) dec_->chooseCells(layers);
+    std::array<std::vector<double>, 3> weights;
+    for (int a = 0; a < dec_->dim(); ++a) weights[a] = layers(a, dec_->globalCells(a));
     dec_->balance(weights);
   }
   // Shuffle once some particle may have left the slack of its cells. A model that asks for

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "engine/error.hpp"
 
 namespace pdq {
@@ -56,6 +58,40 @@ TEST(Decomposition, BalanceCutsAtEqualWeights) {
     }
     EXPECT_EQ(covered, 10);
   }
+}
+
+TEST(Decomposition, ChooseCellsTakesTheCountThatSplitsTheWeightBest) {
+  // 47 planes of particles at x = 0.5 .. 46.5: cells of at least 2.76 make 17 along X, and
+  // 2 cores of whole cells hold 25 and 22 planes at best; 16 cells (8 | 8) hold 23 and 24.
+  // 14 cells would split as well; of equal splits the most cells are kept.
+  auto planesIn = [](int planes) {
+    return [planes](int, int n) {
+      std::vector<double> w(n, 0.0);
+      for (int k = 0; k < planes; ++k)
+        w[static_cast<int>(std::floor((k + 0.5) / (static_cast<double>(planes) / n)))] += 1;
+      return w;
+    };
+  };
+  const auto layers = planesIn(47);
+  const Domain d = box(47, 47, 47, 3);
+  std::array<int, 2> planes{};
+  for (int r = 0; r < 2; ++r) {
+    Decomposition dec(d, 2.76, {2, 1, 1}, 2, r);
+    EXPECT_EQ(dec.globalCells(0), 17);
+    dec.chooseCells(layers);
+    EXPECT_EQ(dec.globalCells(0), 16);
+    EXPECT_EQ(dec.globalCells(1), 17);  // one core along Y: its cells stay
+    EXPECT_DOUBLE_EQ(dec.cellSize(0), 47.0 / 16);
+    dec.balance({layers(0, 16), layers(1, 17), {}});
+    EXPECT_EQ(dec.coreCells(0), 8);
+    const std::vector<double> w = layers(0, 16);
+    for (int g = dec.coreLo(0); g < dec.coreHi(0); ++g) planes[r] += static_cast<int>(w[g]);
+  }
+  EXPECT_EQ(planes, (std::array<int, 2>{23, 24}));
+  // Cells that split evenly already stay as they are.
+  Decomposition even(box(48, 8, 8, 3), 3.0, {2, 1, 1}, 2, 0);
+  even.chooseCells(planesIn(48));
+  EXPECT_EQ(even.globalCells(0), 16);
 }
 
 TEST(Decomposition, AutomaticGridCutsTheLongAxis) {

@@ -32,6 +32,8 @@ class PeriModel : public Model {
   void configure(const Params& p) final;
   Schema schema() const final;
   double horizon() const final { return delta_; }
+  // Bonds are the only neighbours after setup.
+  bool resultsDependOnCells() const final { return false; }
   void setup(Context& ctx) final;
   void prepare(Context& ctx) final;
   Motion motion() const final;
