@@ -156,7 +156,7 @@ void Decomposition::chooseCells(
       }
     }
     nGC_[a] = best;
-    cell_[a] = dom_.length(a) / best;
+    cell_[a] = reach_[a] = dom_.length(a) / best;
     for (int c = 0; c <= p; ++c) cuts_[a][c] = firstCell(c, best, p);
     lo_[a] = cuts_[a][me_[a]];
     hi_[a] = cuts_[a][me_[a] + 1];
