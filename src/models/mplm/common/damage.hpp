@@ -18,9 +18,8 @@ struct DamageLaw {
   double alphaC = 5.728;   // α_c
   double beta = 0.05;      // β: weight of the curvature in ε_mp± (eqs. 4.11, 4.12)
   // Eq. 4.20 keeps the axial force of a compressed interaction whatever its damage, so a
-  // lattice loaded along its bonds never crushes (163 MPa in uniaxial compression along
-  // the bonds, and the shear-critical beam of §4.4.6 carries 416 kN/m, thesis 252);
-  // `crushing` (default) lets ω_c take the compressive axial force too (23.5 MPa, 242 kN/m).
+  // lattice loaded along its bonds never crushes; `crushing` (default) lets ω_c take the
+  // compressive axial force too (docs/mplm.md compares the two).
   bool crushing = true;
 
   // Ω of eqs. 4.13–4.18 for one limit: 0 up to it, 1 from α times it (eps/lim = ratio).
