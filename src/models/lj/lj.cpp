@@ -3,10 +3,11 @@
 //
 //   neighbours   half Verlet lists (verlet_list.hpp) of radius one cell edge, rebuilt after
 //                every engine shuffle. The model's horizon is rc and it asks for cells of
-//                at least rc + skin, each cut in two along each axis (cell_divisions), so
-//                that the cuts between ranks are half a cell fine (on more than one rank);
-//                the engine shuffles once some particle moved more than (cell - rc) / 2
-//                since the last rebuild.
+//                at least rc + skin, whole by default; cell_divisions > 1 cuts each into
+//                sub-cells on more than one rank, so that the cuts between ranks are finer
+//                (docs/lj.md: the list builds then cost more than the balance saves). The
+//                engine shuffles once some particle moved more than (cell - rc) / 2 since
+//                the last rebuild.
 //   force        each pair once (Newton's third law between owned particles; a pair with
 //                a ghost is computed by each side's rank), summed exactly (kernel.hpp), so
 //                the bits do not depend on the order of the pairs, hence on neither the
@@ -45,8 +46,8 @@ class LennardJones final : public Model {
     const double rc = p.number("cutoff", 2.5, 1e-300, 1e300);
     skin_ = p.number("skin", 0.3, 0.0, 1e300);
     dt_ = p.number("dt", 0.005, 1e-300, 1e300);
-    p.integer("cell_divisions", 2);  // a whole number (error otherwise) ...
-    divisions_ = static_cast<int>(p.number("cell_divisions", 2, 1, 4));  // ... in [1, 4]
+    p.integer("cell_divisions", 1);  // a whole number (error otherwise) ...
+    divisions_ = static_cast<int>(p.number("cell_divisions", 1, 1, 4));  // ... in [1, 4]
     const std::string s = p.choice("shift", "energy", {"none", "energy", "force"});
     const Shift shift = s == "none" ? Shift::None : s == "energy" ? Shift::Energy : Shift::Force;
     pair_ = PairLJ(epsilon, sigma, rc, shift);
@@ -196,7 +197,7 @@ class LennardJones final : public Model {
   Grid forceGrid_, energyGrid_;
   double closest_ = 0;  // closest pair allowed
   double mass_ = 1, skin_ = 0.3, dt_ = 0.005;
-  int divisions_ = 2;
+  int divisions_ = 1;
   VerletList lists_;
   std::vector<double> energy_;
   mutable std::vector<KernelScratch> scratch_;  // one per OpenMP thread
