@@ -101,6 +101,17 @@ long Params::integer(const std::string& key, long fallback) const {
   return has(key) ? integer(key) : fallback;
 }
 
+long Params::integer(const std::string& key, long fallback, long lo, long hi) const {
+  if (!has(key)) return fallback;
+  const long n = integer(key);
+  if (n < lo || n > hi) {
+    std::ostringstream os;
+    os << n << " is outside [" << lo << ", " << hi << "]";
+    bad(values_.at(key), key, os.str());
+  }
+  return n;
+}
+
 std::string Params::text(const std::string& key) const { return get(key).text; }
 
 std::string Params::text(const std::string& key, const std::string& fallback) const {

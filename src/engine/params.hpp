@@ -36,6 +36,7 @@ class Params {
   double number(const std::string& key, double fallback) const;
   double number(const std::string& key, double fallback, double lo, double hi) const;
   long integer(const std::string& key, long fallback) const;
+  long integer(const std::string& key, long fallback, long lo, long hi) const;
   std::string text(const std::string& key, const std::string& fallback) const;
   bool flag(const std::string& key, bool fallback) const;
   std::vector<double> numbers(const std::string& key) const;

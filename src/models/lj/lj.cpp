@@ -46,8 +46,7 @@ class LennardJones final : public Model {
     const double rc = p.number("cutoff", 2.5, 1e-300, 1e300);
     skin_ = p.number("skin", 0.3, 0.0, 1e300);
     dt_ = p.number("dt", 0.005, 1e-300, 1e300);
-    p.integer("cell_divisions", 1);  // a whole number (error otherwise) ...
-    divisions_ = static_cast<int>(p.number("cell_divisions", 1, 1, 4));  // ... in [1, 4]
+    divisions_ = static_cast<int>(p.integer("cell_divisions", 1, 1, 4));
     const std::string s = p.choice("shift", "energy", {"none", "energy", "force"});
     const Shift shift = s == "none" ? Shift::None : s == "energy" ? Shift::Energy : Shift::Force;
     pair_ = PairLJ(epsilon, sigma, rc, shift);

@@ -20,7 +20,7 @@ std::size_t keepNear(const double* cx, const double* cy, const double* cz, const
 
 void VerletList::build(const Context& ctx, const double* pos, std::size_t stride, double radius) {
   const std::size_t n = ctx.particles.owned();
-  static const bool v4 = __builtin_cpu_supports("x86-64-v4");
+  static const auto keep = __builtin_cpu_supports("x86-64-v4") ? keepNearAvx512 : keepNear;
 
   const double r2max = radius * radius;
   start_.assign(n + 1, 0);
@@ -65,7 +65,6 @@ void VerletList::build(const Context& ctx, const double* pos, std::size_t stride
       const std::size_t at = s.out.size();
       s.out.resize(at + nc - next + 8);
       std::uint32_t* o = s.out.data() + at;
-      const auto keep = v4 ? keepNearAvx512 : keepNear;
       const std::size_t owned =
           keep(cx, cy, cz, s.near.data(), next, s.owned, xi[0], xi[1], xi[2], r2max, o);
       const std::size_t m = owned + keep(cx, cy, cz, s.near.data(), s.owned, nc, xi[0], xi[1],
