@@ -78,15 +78,18 @@ double Params::number(const std::string& key, double fallback) const {
   return has(key) ? number(key) : fallback;
 }
 
-double Params::number(const std::string& key, double fallback, double lo, double hi) const {
-  if (!has(key)) return fallback;
-  const double d = number(key);
-  if (d < lo || d > hi) {
+template <class T>
+T Params::within(const std::string& key, T v, T lo, T hi) const {
+  if (v < lo || v > hi) {
     std::ostringstream os;
-    os << d << " is outside [" << lo << ", " << hi << "]";
+    os << v << " is outside [" << lo << ", " << hi << "]";
     bad(values_.at(key), key, os.str());
   }
-  return d;
+  return v;
+}
+
+double Params::number(const std::string& key, double fallback, double lo, double hi) const {
+  return has(key) ? within(key, number(key), lo, hi) : fallback;
 }
 
 long Params::integer(const std::string& key) const {
@@ -102,14 +105,7 @@ long Params::integer(const std::string& key, long fallback) const {
 }
 
 long Params::integer(const std::string& key, long fallback, long lo, long hi) const {
-  if (!has(key)) return fallback;
-  const long n = integer(key);
-  if (n < lo || n > hi) {
-    std::ostringstream os;
-    os << n << " is outside [" << lo << ", " << hi << "]";
-    bad(values_.at(key), key, os.str());
-  }
-  return n;
+  return has(key) ? within(key, integer(key), lo, hi) : fallback;
 }
 
 std::string Params::text(const std::string& key) const { return get(key).text; }

@@ -55,6 +55,9 @@ class Params {
  private:
   const Value& get(const std::string& key) const;
   [[noreturn]] void bad(const Value& v, const std::string& key, const std::string& why) const;
+  // v, or an error naming the key's file and line when v is outside [lo, hi].
+  template <class T>
+  T within(const std::string& key, T v, T lo, T hi) const;
   std::string owner_;
   std::map<std::string, Value> values_;
   mutable std::map<std::string, bool> used_;
