@@ -23,6 +23,8 @@ class AtomicFile {
   // so a crash of the machine leaves the old file or the new one, never an empty one.
   void commit(bool durable = false);
   const std::string& path() const { return path_; }
+  // Where the content is until commit(): to read back what was written (flush first).
+  const std::string& temporaryPath() const { return tmp_; }
 
  private:
   std::string path_, tmp_;

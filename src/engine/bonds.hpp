@@ -22,6 +22,7 @@ class Bonds {
   std::size_t end(std::size_t i) const { return start_[i + 1]; }
   std::int32_t partner(std::size_t b) const { return partner_[b]; }
   Gid partnerGid(std::size_t b) const { return partnerGid_[b]; }
+  const Gid* partnerGids(std::size_t b) const { return &partnerGid_[b]; }
   double* attr(std::size_t b) { return &attr_[b * nAttr_]; }
   const double* attr(std::size_t b) const { return &attr_[b * nAttr_]; }
   bool empty() const { return partnerGid_.empty(); }

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <queue>
 #include <sstream>
 #include <string_view>
@@ -40,9 +42,11 @@ void put(std::string& out, T v) {
 // ID order, the 8-byte fields first so that they are read in place from the gathered buffer:
 //   u64 particles n | n x u64 ID | n x u64 bond count | m x u64 partner ID |
 //   m x nAttr f64 attributes | m x u8 dead flag, padded to a multiple of 8 bytes
+// A rank's own bonds are read in place instead (`first`: each particle's first bond in the
+// arrays; null: one particle's bonds after the other's, as in a gathered block).
 struct BondBlock {
   std::size_t n = 0, m = 0;
-  const std::uint64_t *id = nullptr, *count = nullptr, *partner = nullptr;
+  const std::uint64_t *id = nullptr, *count = nullptr, *first = nullptr, *partner = nullptr;
   const double* attr = nullptr;
   const std::uint8_t* dead = nullptr;
 };
@@ -92,6 +96,40 @@ std::vector<char> localBondBlock(const Particles& P, const Bonds& B) {
   }
   return bytes;
 }
+
+// The bonds of one rank's particles where the bond table holds them, in ID order; the
+// particles' IDs, bond counts and first bonds are this object's.
+class LocalBonds {
+ public:
+  LocalBonds(const Particles& P, const Bonds& B) {
+    std::vector<std::size_t> order;
+    for (std::size_t i = 0; i < P.owned(); ++i)
+      if (B.end(i) > B.begin(i)) order.push_back(i);
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return P.gid(a) < P.gid(b); });
+    for (const std::size_t i : order) {
+      id_.push_back(static_cast<std::uint64_t>(P.gid(i)));
+      count_.push_back(B.end(i) - B.begin(i));
+      first_.push_back(B.begin(i));
+      block_.m += count_.back();
+    }
+    block_.n = order.size();
+    block_.id = id_.data();
+    block_.count = count_.data();
+    block_.first = first_.data();
+    if (B.count()) {
+      static_assert(sizeof(Gid) == sizeof(std::uint64_t));
+      block_.partner = reinterpret_cast<const std::uint64_t*>(B.partnerGids(0));
+      block_.attr = B.nAttr() ? B.attr(0) : nullptr;
+      block_.dead = B.deadFlags(0);
+    }
+  }
+  const BondBlock& block() const { return block_; }
+
+ private:
+  std::vector<std::uint64_t> id_, count_, first_;
+  BondBlock block_;
+};
 
 void putVarint(std::string& out, std::uint64_t v) {
   while (v >= 0x80) {
@@ -155,9 +193,16 @@ class Dictionary {
   std::array<std::int16_t, 1024> slots_{};
 };
 
+// The part "bond codes" in its two halves: the IDs and counts, then the attribute codes.
+struct EncodedBonds {
+  std::string ids, codes;
+  bool empty() const { return ids.empty(); }
+  std::size_t size() const { return ids.size() + codes.size(); }
+};
+
 // The part "bond codes": the bonds of every rank's block in ID order (the same bytes on any
 // number of ranks), compact (io/checkpoint.hpp gives the layout).
-std::string encodeBonds(const std::vector<BondBlock>& blocks, int nA) {
+EncodedBonds encodeBonds(const std::vector<BondBlock>& blocks, int nA) {
   struct Next {
     std::uint64_t id;
     std::size_t block;
@@ -179,7 +224,7 @@ std::string encodeBonds(const std::vector<BondBlock>& blocks, int nA) {
     const std::size_t r = heads.top().block;
     heads.pop();
     const std::size_t k = pos[r]++;
-    order.push_back({r, k, bond[r]});
+    order.push_back({r, k, blocks[r].first ? blocks[r].first[k] : bond[r]});
     bond[r] += blocks[r].count[k];
     if (pos[r] < blocks[r].n) heads.push({blocks[r].id[pos[r]], r});
   }
@@ -227,17 +272,20 @@ std::string encodeBonds(const std::vector<BondBlock>& blocks, int nA) {
       }
     }
   }
-  return out + codes;
+  return {std::move(out), std::move(codes)};
 }
 
 // Every rank's bonds, encoded on rank 0 (empty elsewhere, and when there are none).
-std::string gatherBonds(OutputContext& out) {
+EncodedBonds gatherBonds(OutputContext& out) {
   const int nA = out.ctx.bonds.nAttr();
+  if (out.comm.size() == 1) {  // read where they are, not copied first
+    const LocalBonds local(out.ctx.particles, out.ctx.bonds);
+    return local.block().m ? encodeBonds({local.block()}, nA) : EncodedBonds{};
+  }
   std::vector<char> local = localBondBlock(out.ctx.particles, out.ctx.bonds);
   std::vector<std::size_t> starts{0, local.size()};
-  // One rank's block is read where it is.
-  const std::vector<char> all =
-      out.comm.size() > 1 ? out.comm.gather(local, starts) : std::move(local);
+  const std::vector<char> all = out.comm.gather(local, starts);
+  local = {};
   if (!out.comm.root()) return {};
   std::vector<BondBlock> blocks;
   std::size_t m = 0;
@@ -245,7 +293,7 @@ std::string gatherBonds(OutputContext& out) {
     blocks.push_back(blockView(all.data() + starts[r], nA));
     m += blocks.back().m;
   }
-  return m ? encodeBonds(blocks, nA) : std::string{};
+  return m ? encodeBonds(blocks, nA) : EncodedBonds{};
 }
 
 // The part "bond codes" back as rows (owner, partner, dead, attributes), for parseRestart.
@@ -506,38 +554,80 @@ void CheckpointOutput::write(OutputContext& out) {
   if (out.step == lastWritten_) return;
   lastWritten_ = out.step;
   last_ = seconds();
-  const RestartTexts t = restartTexts(out, false);
-  const std::string bonds = gatherBonds(out);
-  if (!out.comm.root()) return;
-  // Written part by part as the CRC-32 runs over them: no copy of the whole file.
-  AtomicFile f(checkpointPath(out.outDir, out.step));
-  std::uint32_t crc = 0;
-  auto emit = [&](std::string_view b) {
-    crc = crc32(b.data(), b.size(), crc);
-    f.stream().write(b.data(), static_cast<std::streamsize>(b.size()));
+  EncodedBonds bonds = gatherBonds(out);
+  // Each part is written as its pieces arrive, its length (and the header's count of parts)
+  // filled in afterwards, and the CRC-32 read back from the file: rank 0 holds no whole part
+  // but the bond codes.
+  std::unique_ptr<AtomicFile> f;
+  std::ofstream* o = nullptr;
+  std::streampos countAt, lengthAt, partAt;
+  std::uint32_t parts = 0;
+  std::vector<std::pair<std::streampos, std::uint64_t>> lengths;
+  auto bytes = [&](std::string_view b) {
+    o->write(b.data(), static_cast<std::streamsize>(b.size()));
   };
-  auto emitPart = [&](const std::string& name, std::string_view content) {
+  auto endPart = [&] {
+    if (parts) lengths.emplace_back(lengthAt, static_cast<std::uint64_t>(o->tellp() - partAt));
+  };
+  auto beginPart = [&](const std::string& name) {
+    endPart();
+    ++parts;
     std::string head;
     put(head, static_cast<std::uint32_t>(name.size()));
     head += name;
-    put(head, static_cast<std::uint64_t>(content.size()));
-    emit(head);
-    emit(content);
+    bytes(head);
+    lengthAt = o->tellp();
+    bytes(std::string(sizeof(std::uint64_t), '\0'));
+    partAt = o->tellp();
   };
-  std::string head(kMagic, sizeof kMagic);
-  put(head, static_cast<std::uint64_t>(out.step));
-  put(head, out.ctx.time());
-  put(head, out.ctx.dt());
-  put(head, out.setupDt);
-  put(head, hash_);
-  put(head, static_cast<std::uint32_t>(2 + (t.fixed ? 1 : 0) + (bonds.empty() ? 0 : 1)));
-  emit(head);
-  emitPart("state", *t.state);
-  if (t.fixed) emitPart("fixed", *t.fixed);
-  if (!bonds.empty()) emitPart("bond codes", bonds);
-  emitPart("particles", t.particles);
-  f.stream().write(reinterpret_cast<const char*>(&crc), sizeof crc);
-  f.commit(true);
+  if (out.comm.root()) {
+    f = std::make_unique<AtomicFile>(checkpointPath(out.outDir, out.step));
+    o = &f->stream();
+    std::string head(kMagic, sizeof kMagic);
+    put(head, static_cast<std::uint64_t>(out.step));
+    put(head, out.ctx.time());
+    put(head, out.ctx.dt());
+    put(head, out.setupDt);
+    put(head, hash_);
+    bytes(head);
+    countAt = o->tellp();
+    bytes(std::string(sizeof(std::uint32_t), '\0'));
+  }
+  static const char* const names[] = {"state", "fixed", "bonds", "particles"};
+  int current = -1;
+  restartParts(out, false, [&](RestartPart part, const std::string& text) {
+    if (static_cast<int>(part) != current) {
+      current = static_cast<int>(part);
+      if (part == RestartPart::PARTICLES && !bonds.empty()) {
+        beginPart("bond codes");
+        bytes(bonds.ids);
+        bytes(bonds.codes);
+        bonds = {};
+      }
+      beginPart(names[current]);
+    }
+    bytes(text);
+  });
+  if (!out.comm.root()) return;
+  endPart();
+  for (const auto& [at, length] : lengths) {
+    o->seekp(at);
+    o->write(reinterpret_cast<const char*>(&length), sizeof length);
+  }
+  o->seekp(countAt);
+  o->write(reinterpret_cast<const char*>(&parts), sizeof parts);
+  o->seekp(0, std::ios::end);
+  o->flush();
+  if (!*o) throw Error("cannot write " + f->path() + ": " + std::strerror(errno));
+  std::uint32_t crc = 0;
+  {
+    std::ifstream in(f->temporaryPath(), std::ios::binary);
+    std::vector<char> chunk(1 << 20);
+    while (in.read(chunk.data(), static_cast<std::streamsize>(chunk.size())) || in.gcount() > 0)
+      crc = crc32(chunk.data(), static_cast<std::size_t>(in.gcount()), crc);
+  }
+  o->write(reinterpret_cast<const char*>(&crc), sizeof crc);
+  f->commit(true);
   // The newest `kept` stay; this one is the newest (begin removed any later).
   const auto steps = checkpointSteps(out.outDir);
   for (std::size_t k = 0; k + kept_ < steps.size(); ++k)

@@ -70,10 +70,6 @@ namespace {
 // at a time, not of the whole problem.
 constexpr long kPieceParticles = 8192;
 
-enum Part { STATE, FIXED, BONDS, PARTICLES };
-// Receives the restart's text on rank 0, part after part in this order, each in pieces.
-using PartSink = std::function<void(Part, const std::string&)>;
-
 // Rows of the owned particles gathered to rank 0 by pieces of the ID range (about
 // kPieceParticles particles each) and handed to `take` there in ID order; collective.
 // `order`: the owned particles in ID order; `rows(i, out)` appends particle i's rows.
@@ -98,8 +94,10 @@ void gatherByPieces(const OutputContext& out, const std::vector<std::size_t>& or
   }
 }
 
-// The restart state at out.step as text, handed to `sink` on rank 0; collective.
-void restartParts(OutputContext& out, bool bonds, const PartSink& sink) {
+}  // namespace
+
+void restartParts(OutputContext& out, bool bonds, const RestartSink& sink) {
+  using enum RestartPart;
   const Particles& P = out.ctx.particles;
   const Bonds& B = out.ctx.bonds;
   const Schema& s = P.schema();
@@ -130,7 +128,7 @@ void restartParts(OutputContext& out, bool bonds, const PartSink& sink) {
     sink(STATE, text);
   }
   // A file of one row per particle: its ID, then the `n` numbers at `row(i)`.
-  auto perParticle = [&](Part part, const std::string& header, int n, auto row) {
+  auto perParticle = [&](RestartPart part, const std::string& header, int n, auto row) {
     if (root) sink(part, header);
     gatherByPieces(
         out, order, 1 + n, 1,
@@ -184,30 +182,6 @@ void restartParts(OutputContext& out, bool bonds, const PartSink& sink) {
   perParticle(PARTICLES, header.str() + "\n", nA, [&](std::size_t i) { return P.alter(i); });
 }
 
-}  // namespace
-
-RestartTexts restartTexts(OutputContext& out, bool bonds) {
-  RestartTexts t;
-  t.step = out.step;
-  restartParts(out, bonds, [&](Part part, const std::string& text) {
-    switch (part) {
-      case STATE:
-        t.state.emplace() += text;
-        break;
-      case FIXED:
-        (t.fixed ? *t.fixed : t.fixed.emplace()) += text;
-        break;
-      case BONDS:
-        (t.bonds ? *t.bonds : t.bonds.emplace()) += text;
-        break;
-      case PARTICLES:
-        t.particles += text;
-        break;
-    }
-  });
-  return t;
-}
-
 void removeRestartFiles(const std::string& dir, long step) {
   for (const char* kind : {"ParticleAlterAttrs.", "Bonds.", "State.", "ParticleFixedAttrs."})
     removeStepFiles(dir, kind, ".rst", step);
@@ -228,11 +202,11 @@ void RestartOutput::write(OutputContext& out) {
   const std::string* names[] = {&n.state, &n.fixed, &n.bonds, &n.particles};
   std::unique_ptr<AtomicFile> file;
   int current = -1;
-  restartParts(out, true, [&](Part part, const std::string& text) {
-    if (part != current) {
+  restartParts(out, true, [&](RestartPart part, const std::string& text) {
+    if (static_cast<int>(part) != current) {
       if (file) file->commit();
-      file = std::make_unique<AtomicFile>(*names[part]);
-      current = part;
+      current = static_cast<int>(part);
+      file = std::make_unique<AtomicFile>(*names[current]);
     }
     file->stream().write(text.data(), static_cast<std::streamsize>(text.size()));
   });

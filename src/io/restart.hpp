@@ -10,6 +10,7 @@
 // bonds file that is missing, of another step, cut short (fewer bonds than the state file
 // says), with a self-bond, a one-sided bond, a bond listed twice, an ID not in the problem
 // or a dead flag other than 0 or 1 is an error naming the file and line.
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,9 +39,13 @@ struct RestartTexts {
   std::string particles;
 };
 
-// The state at out.step, on rank 0 (nothing elsewhere); collective. Without `bonds` the
-// bonds are left out (a checkpoint gathers them in its own form); the state still counts them.
-RestartTexts restartTexts(OutputContext& out, bool bonds = true);
+// The state at out.step as text, handed to `sink` on rank 0 (nothing elsewhere) part after
+// part in this order, each in pieces of about 8192 particles, so that rank 0 never holds a
+// whole part; collective. Without `bonds` the bonds are left out (a checkpoint gathers them
+// in its own form); the state still counts them.
+enum class RestartPart { STATE, FIXED, BONDS, PARTICLES };
+using RestartSink = std::function<void(RestartPart, const std::string&)>;
+void restartParts(OutputContext& out, bool bonds, const RestartSink& sink);
 
 // What each part is called in messages: its file (RestartOutput's names in a folder).
 struct RestartNames {
