@@ -195,8 +195,11 @@ bool Decomposition::wraps(int a, int dir) const {
 }
 
 int Decomposition::globalCell(int a, double x) const {
-  if (!active(a)) return 0;
-  return static_cast<int>(std::floor((x - dom_.lo[a]) / cell_[a]));
+  return active(a) ? cellAlong(dom_, a, nGC_[a], x) : 0;
+}
+
+int Decomposition::cellAlong(const Domain& domain, int a, int cells, double x) {
+  return static_cast<int>(std::floor((x - domain.lo[a]) / (domain.length(a) / cells)));
 }
 
 int Decomposition::ownerCoord(int a, int g) const {

@@ -58,6 +58,8 @@ class Decomposition {
   int rankOf(std::array<int, 3> c) const { return (c[2] * nP_[1] + c[1]) * nP_[0] + c[0]; }
   // Global cell of coordinate x along a (may be <0 or >= globalCells when outside).
   int globalCell(int a, double x) const;
+  // The same for `cells` cells along a of `domain` (a count being considered).
+  static int cellAlong(const Domain& domain, int a, int cells, double x);
   // Processor coordinate along a that owns global cell g (0 <= g < globalCells).
   int ownerCoord(int a, int g) const;
 

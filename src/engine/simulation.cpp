@@ -171,10 +171,9 @@ void Simulation::setup() {
     const Domain& dom = dec_->domain();
     auto layers = [&](int a, int n) {
       std::vector<double> w(n, 0.0);
-      const double cell = dom.length(a) / n;
       for (std::size_t k = 0; k < initial_.size(); ++k) {
         const double* x = model_->shuffles() ? initial_.alterRow(k) : initial_.fixedRow(k);
-        const int g = static_cast<int>(std::floor((x[a] - dom.lo[a]) / cell));
+        const int g = Decomposition::cellAlong(dom, a, n, x[a]);
         w[dom.periodic[a] ? ((g % n) + n) % n : std::clamp(g, 0, n - 1)] += 1;
       }
       return w;
