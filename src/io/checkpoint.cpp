@@ -197,7 +197,6 @@ class Dictionary {
 struct EncodedBonds {
   std::string ids, codes;
   bool empty() const { return ids.empty(); }
-  std::size_t size() const { return ids.size() + codes.size(); }
 };
 
 // The part "bond codes": the bonds of every rank's block in ID order (the same bytes on any
