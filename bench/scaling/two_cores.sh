@@ -5,8 +5,10 @@
 #   two:   2 ranks, the whole problem (efficiency = one's CPU time over the sum of both
 #          ranks' CPU time; speed-up = one's wall time over two's);
 #   alone: 1 rank, about half the problem (a 37^3 block, 32^3 fcc cells), alone;
-#   pair:  two INDEPENDENT 1-rank runs of that half at once (no messages, nothing shared
-#          but the machine: its memory bus and last-level cache).
+#   pair:  two INDEPENDENT 1-rank runs of that half at once, pinned one to each core as
+#          the 2-rank run's ranks are (no messages, nothing shared but the machine: its
+#          memory bus, last-level cache, and each core's own speed, which on this virtual
+#          machine differs between the cores while both work: docs/scaling.md).
 # The ceiling is alone's time per unit of work over pair's: what any 2-rank run can reach
 # here, whatever its code (CPU time and wall time; work = bond-steps for the blocks,
 # atom-steps for LJ). Medians over the rounds. Meaningful on a quiet machine only: another
@@ -27,19 +29,19 @@ if [[ $quick == quick ]]; then rounds=1 full=16 half=13 pdsteps=10 ljfull=8 ljha
 
 field() { sed -nE "s/(^|.* )$1=([^ ]*).*/\2/p" | head -1; }  # key=value from stdin
 # One run in its own folder: prints "wall cpu_sum work" (work: bond-steps or atom-steps).
-run() {  # dir ranks work-kind [unbound] args...
+run() {  # dir ranks work-kind [core N] args...
   local dir=$1 np=$2 kind=$3 out
   shift 3
   # Two separate 1-rank launches at once would otherwise both be bound to core 0.
-  local -a mpirun=("${mpirun[@]}")
-  if [[ $1 == unbound ]]; then mpirun+=(--bind-to none); shift; fi
+  local -a mpirun=("${mpirun[@]}") pin=()
+  if [[ $1 == core ]]; then mpirun+=(--bind-to none); pin=(taskset -c "$2"); shift 2; fi
   mkdir -p "$dir"
   if [[ $kind == pd ]]; then
-    out=$(cd "$dir" && "${mpirun[@]}" -np "$np" "$pd" block "$@")
+    out=$(cd "$dir" && "${mpirun[@]}" -np "$np" "${pin[@]}" "$pd" block "$@")
     awk -v t="$(field time <<<"$out")" -v c="$(field cpu_sum <<<"$out")" \
       -v b="$(field bonds <<<"$out")" -v s="$3" 'BEGIN { print t, c, b * s }'
   else
-    out=$(cd "$dir" && "${mpirun[@]}" -np "$np" "$lj" "$@")
+    out=$(cd "$dir" && "${mpirun[@]}" -np "$np" "${pin[@]}" "$lj" "$@")
     awk -v t="$(field seconds <<<"$out")" -v c="$(field cpu_sum <<<"$out")" \
       -v a="$(field atoms <<<"$out")" -v s="$2" 'BEGIN { print t, c, a * s }'
   fi
@@ -62,8 +64,8 @@ for w in pmb lps lj; do
     read -r t1 c1 w1 < <(run "$d/one" 1 "$kind" "${whole[@]}")
     read -r t2 c2 w2 < <(run "$d/two" 2 "$kind" "${whole[@]}")
     read -r ta ca wa < <(run "$d/alone" 1 "$kind" "${part[@]}")
-    run "$d/pa" 1 "$kind" unbound "${part[@]}" >"$d.pa" &
-    run "$d/pb" 1 "$kind" unbound "${part[@]}" >"$d.pb"
+    run "$d/pa" 1 "$kind" core 0 "${part[@]}" >"$d.pa" &
+    run "$d/pb" 1 "$kind" core 1 "${part[@]}" >"$d.pb"
     wait
     read -r tpa cpa wpa <"$d.pa"
     read -r tpb cpb wpb <"$d.pb"
