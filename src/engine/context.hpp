@@ -52,11 +52,17 @@ class Context {
   // The cell of particle i. Owned particles are sorted by cell: consecutive owned
   // particles with the same cell have the same nearby particles (but for themselves).
   int cellOf(std::size_t i) const { return cube_.cellOf(i); }
+  // The global cell of particle i, the cells per undivided cell (whose edge is at least the
+  // horizon) along each axis, and the global cells along axis a.
+  const std::array<int, 3>& globalCellOf(std::size_t i) const { return cube_.globalCellOf(i); }
+  int cellDivisions() const { return cube_.decomposition().divisions(); }
+  int globalCells(int a) const { return cube_.decomposition().globalCells(a); }
   // Gives the ghosts of a model's own array their owners' values: `values` holds `width`
   // numbers per local particle (owned first, then ghosts; size >= particles.local() x
   // width), e.g. a state-based model's dilatation between its two force passes. Every
   // rank must call it alike.
   void refreshGhosts(std::span<double> values, int width) { cube_.refreshGhosts(values, width); }
+  long ghostRefreshes() const { return cube_.ghostRefreshes(); }
 
   // Global reductions, identical on every rank and for every processor grid.
   double sum(ExactSum& acc) const { return comm_.sum(acc); }

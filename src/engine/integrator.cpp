@@ -74,8 +74,9 @@ Solver readSolver(const Params& p, const std::string& kindKey) {
   const std::string kind = p.choice(kindKey, "dynamic", {"dynamic", "quasi_static"});
   s.quasiStatic = kind == "quasi_static";
   if (const auto where = p.raw(kindKey)) s.line = where->line;
-  for (const char* key : {"tolerance", "max_iterations", "load_steps", "max_broken",
-                          "max_cut_backs", "control_axis", "control_displacement", "control_ids"})
+  for (const char* key :
+       {"tolerance", "max_iterations", "load_steps", "max_broken", "max_cut_backs",
+        "peak_tolerance", "masses", "control_axis", "control_displacement", "control_ids"})
     if (!s.quasiStatic && p.has(key))
       throw InputError(p.raw(key)->file, p.raw(key)->line,
                        std::string(key) + " is a quasi-static solver parameter; set " + kindKey +
@@ -104,6 +105,12 @@ Solver readSolver(const Params& p, const std::string& kindKey) {
     throw InputError(p.raw("max_cut_backs")->file, p.raw("max_cut_backs")->line,
                      "max_cut_backs must be between 0 and 50 (halvings of the increment)");
   s.maxCutBacks = static_cast<int>(cuts);
+  s.modelMasses = p.choice("masses", "stiffness", {"stiffness", "model"}) == "model";
+  s.peakTolerance = p.number("peak_tolerance", s.peakTolerance);
+  if (!(s.peakTolerance >= 0))
+    throw InputError(p.raw("peak_tolerance")->file, p.raw("peak_tolerance")->line,
+                     "peak_tolerance must be >= 0 (the peak's bracket relative to the last "
+                     "load in equilibrium; 0: down to the smallest increment)");
   s.control = readControl(p, "control_");
   if (p.has("control_ids")) {
     const int at = p.raw("control_ids")->line;
@@ -153,6 +160,9 @@ std::string writeSolver(const Solver& s) {
   if (s.maxBroken != none.maxBroken) out += "max_broken " + std::to_string(s.maxBroken) + "\n";
   if (s.maxCutBacks != none.maxCutBacks)
     out += "max_cut_backs " + std::to_string(s.maxCutBacks) + "\n";
+  if (s.modelMasses) out += "masses model\n";
+  if (s.peakTolerance != none.peakTolerance)
+    out += "peak_tolerance " + numberText(s.peakTolerance) + "\n";
   if (s.control.active()) {
     out += std::string("control_axis ") + "xyz"[s.control.axis] + "\ncontrol_displacement " +
            numberText(s.control.displacement) + "\ncontrol_ids";
@@ -210,17 +220,20 @@ void Integrator::resolve(const Schema& s) {
 
 std::vector<double> Integrator::state() const {
   if (omega2_ < 0) return {holdDamping_};
-  return {holdDamping_,    omega2_,    iterations_,  path_.progress,
-          path_.increment, path_.easy, path_.beyond, path_.first};
+  return {holdDamping_, omega2_,     iterations_, path_.progress, path_.increment, path_.easy,
+          path_.beyond, path_.first, mu_};
 }
 
 void Integrator::setState(std::span<const double> s) {
-  if (s.size() != 1 && (s.size() < 6 || s.size() > 8))
-    throw std::logic_error("integrator state: one or six to eight values expected");
+  if (s.size() != 1 && (s.size() < 6 || s.size() > 9))
+    throw std::logic_error("integrator state: one or six to nine values expected");
   holdDamping_ = s[0];
-  if (s.size() >= 6) {  // six or seven: written before the load path kept `beyond`, `first`
+  // Six to eight: written before the load path kept `beyond` and `first`, and before the
+  // Gershgorin masses (μ = 0: the model's masses, as those runs had).
+  if (s.size() >= 6) {
     omega2_ = s[1], iterations_ = s[2];
-    path_ = {s[3], s[4], s[5], s.size() >= 7 ? s[6] : 0.0, s.size() == 8 ? s[7] : 0.0};
+    path_ = {s[3], s[4], s[5], s.size() >= 7 ? s[6] : 0.0, s.size() >= 8 ? s[7] : 0.0};
+    mu_ = s.size() == 9 ? s[8] : 0.0;
   }
 }
 

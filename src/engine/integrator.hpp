@@ -87,15 +87,22 @@ struct Solver {
   long loadSteps = 1;
   long maxBroken = 0;
   int maxCutBacks = 10;
+  // Force control: the run also ends once the lowest load factor found to have no
+  // equilibrium near the last one lies within peakTolerance × the last equilibrium's
+  // (0: only when the smallest increment reaches it), as the bisection's bracket does.
+  double peakTolerance = 0;
+  // Fictitious masses: each DOF's Gershgorin bound of the stiffness (false, the default)
+  // or the model's masses and inertias (true).
+  bool modelMasses = false;
   DisplacementControl control;
   int line = 0;  // of max_iterations (or of the kind) in the run's input, for the error when a
                  // load step does not converge in time
 };
 
 // The solver from the keys `kindKey` ("dynamic" or "quasi_static"), tolerance,
-// max_iterations, load_steps, max_broken, max_cut_backs (the scenario's [solver] table with
-// kindKey "kind", or pdQInput.dat with kindKey "solver"); `writeSolver` gives the keys for
-// pdQInput.dat, the displacement control as control_axis, control_displacement and
+// max_iterations, load_steps, max_broken, max_cut_backs, peak_tolerance, masses (the scenario's
+// [solver] table with kindKey "kind", or pdQInput.dat with kindKey "solver"); `writeSolver` gives
+// the keys for pdQInput.dat, the displacement control as control_axis, control_displacement and
 // control_ids (read back by readControl; a scenario gives it as [solver.control]).
 Solver readSolver(const Params& p, const std::string& kindKey);
 std::string writeSolver(const Solver& s);
@@ -213,7 +220,20 @@ class Integrator {
   // Relaxation (relaxation.cpp): the fictitious mass scale from the highest frequency of
   // the free degrees of freedom, and the force of DOF d of owned particle i in force units
   // with the external load at `factor`.
-  double highestFrequencySquared(Context& ctx, const std::function<void()>& forces);
+  // ω_max² of M⁻¹K, M the model's masses, or the given ones per owned DOF.
+  double highestFrequencySquared(Context& ctx, const std::function<void()>& forces,
+                                 const std::vector<double>& masses);
+  // Per free DOF of the owned particles (nT_ + nR_ each), the Gershgorin bound Σ_j |K_ij| of
+  // the model's stiffness at the current state, from finite differences of its forces with
+  // the particles coloured so that each probe reaches every row from one particle at most;
+  // empty when that takes too many probes (docs/quasi-static.md, "Fictitious masses").
+  std::vector<double> gershgorinRows(Context& ctx, const std::function<void()>& forces);
+  // A finite-difference probe of the stiffness at the current state: f = −K u for a
+  // displacement field u given at every local particle (forces and moments of the owned
+  // particles); the state is put back after each probe. `passes`, when given, is set to
+  // one plus the ghost refreshes one force evaluation makes.
+  std::function<void(std::span<const double>, std::span<double>)> stiffnessProbe(
+      Context& ctx, const std::function<void()>& forces, long* passes = nullptr);
   double dofForce(const Particles& P, std::size_t i, int d, double factor) const;
   // Turns the spatial orientation of owned particle i by the rotation vector phi.
   void turn(Particles& P, std::size_t i, const double phi[3]) const;
@@ -242,9 +262,13 @@ class Integrator {
   // Whether any of n values is not finite: a vectorised sweep (AVX2 when the CPU has it).
   bool (*anyNotFinite_)(const double*, std::size_t) = nullptr;
   double holdDamping_ = -1;  // 2 ζ_h ω₁ once computed
-  // Quasi-static: ω_max² of M⁻¹K (the fictitious masses' scale), computed once at the first
-  // load step, and the iterations done so far; both saved in restart files.
-  double omega2_ = -1;
+  // Quasi-static fictitious masses, computed at the first load step and saved in restart
+  // files: ω_max² of M⁻¹K (or, with Gershgorin masses, the largest ratio of a DOF's
+  // Gershgorin bound to its mass), and μ, ω_max² of G⁻¹K with G the Gershgorin masses
+  // (0: the masses are the model's); and the iterations done so far.
+  double omega2_ = -1, mu_ = 0;
+  std::vector<double> rows_;  // the Gershgorin rows and the load factor of the equilibrium
+  double rowsAt_ = -1;        // they were probed at
   double iterations_ = 0;
   LoadPath path_;
 };

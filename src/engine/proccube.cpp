@@ -295,6 +295,7 @@ void ProcCube::halo(bool allColumns) {
 }
 
 void ProcCube::refreshGhosts(std::span<double> values, int width) {
+  ++refreshes_;
   const std::size_t w = static_cast<std::size_t>(width);
   if (values.size() < p_.local() * w)
     throw std::logic_error("refreshGhosts: the array is shorter than local particles x width");

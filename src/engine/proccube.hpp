@@ -54,6 +54,9 @@ class ProcCube {
   // first, then ghosts): the ghosts' rows get their owners' values. Nothing is shifted
   // across periodic boundaries, so positions do not belong here.
   void refreshGhosts(std::span<double> values, int width);
+  // How many times refreshGhosts ran (a model that refreshes its own arrays between force
+  // passes reaches that many more cells).
+  long ghostRefreshes() const { return refreshes_; }
   // Bonds: map each bond's partner global ID to a local index (nearest copy if several).
   void remapBonds(long step);
 
@@ -79,6 +82,8 @@ class ProcCube {
   // The local cell of particle i (owned particles are sorted by cell, so owned particles
   // of one cell are consecutive and share their nearby particles).
   int cellOf(std::size_t i) const { return cell_[i]; }
+  // The global cell of local particle i (that of its listing).
+  const std::array<int, 3>& globalCellOf(std::size_t i) const { return gcell_[i]; }
 
   const ExchangeStats& stats() const { return stats_; }
   std::uint64_t haloRecordBytes() const;
@@ -113,6 +118,7 @@ class ProcCube {
   std::vector<double> rebuildPos_;  // owned positions at the last rebuild
   std::vector<double> sendBuf_, recvBuf_;
   ExchangeStats stats_;
+  long refreshes_ = 0;
 };
 
 }  // namespace pdq

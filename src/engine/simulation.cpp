@@ -400,6 +400,15 @@ bool Simulation::relaxLoadStep() {
   long broken = brokenBefore;
   const double smallest = std::ldexp(1.0, -solver.maxCutBacks);
   for (int cuts = 0;; ++cuts) {  // cuts: cut-backs of this load step
+    if (path.beyond > 0 && previous > 0 &&
+        staticFactor(path.beyond) - previous <= solver.peakTolerance * previous) {
+      std::ostringstream what;
+      what << "load factor " << staticFactor(path.beyond)
+           << " had no equilibrium near an earlier one, within peak_tolerance ("
+           << solver.peakTolerance << ") of the last equilibrium";
+      stopBelow(previous, staticFactor(path.beyond), what.str());
+      return endStep(false);
+    }
     double increment = std::min(path.increment, full - path.progress);
     // A load found to have no equilibrium near the last one is not tried again: the
     // increment is halved until the load step stays below it.
