@@ -209,6 +209,10 @@ dir = "out"
        "qs.toml:13: the displacement control needs both axis"},
       {"negative max_broken", "load_steps = 2", "load_steps = 2\nmax_broken = -1",
        "qs.toml:12: max_broken must be >= 0"},
+      {"negative peak_tolerance", "load_steps = 2", "load_steps = 2\npeak_tolerance = -0.02",
+       "qs.toml:12: peak_tolerance must be >= 0"},
+      {"unknown fictitious masses", "load_steps = 2", "load_steps = 2\nmasses = \"heavy\"",
+       "qs.toml:12: "},
   };
   for (const auto& c : solverCases) {
     SCOPED_TRACE(c.name);

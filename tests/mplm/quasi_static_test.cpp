@@ -254,5 +254,78 @@ TEST(QuasiStatic, IterationCapScalesWithTheFirstLoadStep) {
                 rows[0][2], rows[1][2], rows[2][2]);
 }
 
+// The fictitious masses from the stiffness's Gershgorin bounds (the default) against the
+// model's masses scaled by ω_max²: the small reinforced beam, whose bar is stiffer than the
+// concrete, relaxes its first load step (elastic, from rest) in fewer iterations, to the
+// same equilibrium.
+TEST(QuasiStatic, GershgorinMassesRelaxAReinforcedBeamFaster) {
+  Comm comm;
+  const Params p = test::params({{"damage", "false"}});
+  Solver model = test::solver(1e-9);
+  model.modelMasses = true;
+  auto byModel = test::quasiStatic(comm, p, test::smallBeam(), model, "qs_masses_model", 60);
+  auto byStiffness =
+      test::quasiStatic(comm, p, test::smallBeam(), test::solver(1e-9), "qs_masses_stiffness", 60);
+  byModel->run();
+  byStiffness->run();
+  const auto m = test::loadStepRows("qs_masses_model");
+  const auto g = test::loadStepRows("qs_masses_stiffness");
+  ASSERT_EQ(m.size(), 1u);
+  ASSERT_EQ(g.size(), 1u);
+  EXPECT_LT(g[0][2], m[0][2]);
+  // The same displacements, to what the tolerance leaves.
+  Particles& A = byModel->particles();
+  Particles& B = byStiffness->particles();
+  double diff = 0, size = 0;
+  for (std::size_t i = 0; i < A.owned(); ++i) {
+    ASSERT_EQ(A.gid(i), B.gid(i));
+    for (int c : {AX, AY}) {
+      const double a = A.alter(i)[c] - A.fixed(i)[c], b = B.alter(i)[c] - B.fixed(i)[c];
+      diff = std::max(diff, std::fabs(a - b));
+      size = std::max(size, std::fabs(a));
+    }
+  }
+  diff = byModel->context().max(diff);
+  size = byModel->context().max(size);
+  EXPECT_LT(diff, 1e-6 * size);
+  if (comm.root())
+    std::printf(
+        "reinforced beam, first load step: %g iterations (model's masses), %g "
+        "(Gershgorin), displacements alike to %.1e\n",
+        m[0][2], g[0][2], diff / size);
+}
+
+// peak_tolerance: under force control past the peak, the run ends as soon as the lowest
+// load found to have no equilibrium lies within the tolerance of the last equilibrium
+// (the bisection's bracket), before the increment reaches its smallest; without it the
+// run refines the same peak further.
+TEST(QuasiStatic, PeakToleranceEndsTheRunAtTheBracket) {
+  Comm comm;
+  auto peak = [&](double tolerance, const std::string& dir) {
+    Solver solver = test::solver(1e-6, kLoadSteps, 100000000);
+    solver.maxCutBacks = 10;
+    solver.peakTolerance = tolerance;
+    auto sim =
+        test::quasiStatic(comm, test::params({}), test::smallBeam(), solver, dir, kBeyondPeak);
+    while (sim->advance()) {
+    }
+    sim->finish();
+    return std::make_pair(sim->lastLoadStep(), sim->context().stopReason());
+  };
+  const auto [coarse, why] = peak(0.05, "qs_peak_tolerance");
+  const auto [fine, whyFine] = peak(0, "qs_peak_fine");
+  EXPECT_THAT(why, ::testing::HasSubstr("within peak_tolerance (0.05)"));
+  EXPECT_GT(coarse.factor, 0);
+  EXPECT_LE(coarse.beyond - coarse.factor, 0.05 * coarse.factor);
+  EXPECT_GT(coarse.beyond - coarse.factor, kBeyondPeak / kLoadSteps / 1024) << "not the smallest";
+  EXPECT_THAT(whyFine, ::testing::Not(::testing::HasSubstr("peak_tolerance")));
+  EXPECT_LT(fine.beyond - fine.factor, coarse.beyond - coarse.factor);
+  EXPECT_GE(fine.factor, coarse.factor);
+  EXPECT_LE(fine.beyond, coarse.beyond);
+  if (comm.root())
+    std::printf("peak: %g to %g with peak_tolerance 0.05, %g to %g without\n", coarse.factor,
+                coarse.beyond, fine.factor, fine.beyond);
+}
+
 }  // namespace
 }  // namespace pdq::mplm
