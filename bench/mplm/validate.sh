@@ -39,7 +39,7 @@ strength() {
     bracket="failed: see $work/$m/$e.log"
     return 0
   fi
-  times=$(echo "$t" | awk '{printf "%.0f s (CPU %.0f s)", $1, $2 + $3}')
+  times=$(echo "$t" | awk '{printf "%.1f s (CPU %.1f s)", $1, $2 + $3}')
   rep=$m/${e}_out/strength/strength.txt
   bracket=$(field strength | sed -E 's/^([^ ]+) to ([^ ]+) ([^ ]+) .*/\1–\2 \3/')
   [ -n "$bracket" ] || bracket="not found ($(grep -m1 -E '^(in equilibrium|no failure|fails at)' "$rep"))"
