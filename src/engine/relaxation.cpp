@@ -150,7 +150,12 @@ std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function
   // restart file does not hold.
   const int nA = P.schema().nAlter();
   const std::vector<double> current(P.alter(0), P.alter(0) + nl * nA);
-  auto putBack = [&] { std::copy(current.begin(), current.end(), P.alter(0)); };
+  Bonds::Saved bonds;  // an evaluation at the reference may change them (a yielded bar)
+  ctx.bonds.save(bonds);
+  auto putBack = [&] {
+    std::copy(current.begin(), current.end(), P.alter(0));
+    ctx.bonds.restore(bonds);
+  };
   for (std::size_t i = 0; i < nl; ++i) {
     double* a = P.alter(i);
     for (int d = 0; d < nT_; ++d) a[pos_[d]] = P.fixed(i)[pos_[d]];
