@@ -45,9 +45,9 @@ constexpr double kGershgorinSafety = 2.5;
 constexpr int kPowerIterations = 100;
 // The finite-difference probe moves no DOF more than this fraction of the horizon (or rad).
 constexpr double kProbe = 1e-7;
-// Per-DOF fictitious masses need one probe per colour and DOF; beyond this many (a long
-// horizon in 3D), the masses are the model's scaled by ω_max² instead.
-constexpr long kMaxProbes = 600;
+// Per-DOF fictitious masses need one probe per colour and DOF each way; beyond this many (3D
+// peridynamics), the masses are the model's scaled by ω_max² instead.
+constexpr long kMaxProbes = 5000;
 // Damage is kept from the evaluations whose out-of-balance force is below this share of the
 // applied load (or reactions).
 constexpr double kSettled = 1e-2;
