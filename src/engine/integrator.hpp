@@ -235,6 +235,10 @@ class Integrator {
   std::function<void(std::span<const double>, std::span<double>)> stiffnessProbe(
       Context& ctx, const std::function<void()>& forces, long* passes = nullptr);
   double dofForce(const Particles& P, std::size_t i, int d, double factor) const;
+  // The mass (translations) or rotational inertia (rotations) of DOF d of owned particle i.
+  double dofMass(std::size_t i, int d) const {
+    return d < nT_ ? bodies_[i].mass : bodies_[i].inertia;
+  }
   // Turns the spatial orientation of owned particle i by the rotation vector phi.
   void turn(Particles& P, std::size_t i, const double phi[3]) const;
   // Owned particle i's step (kick, the loads at fNow, damping c; prescribed values at fNext);

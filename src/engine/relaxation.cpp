@@ -131,9 +131,7 @@ double Integrator::highestFrequencySquared(Context& ctx, const std::function<voi
   for (std::size_t i = 0; i < n; ++i)
     for (int d = 0; d < nd; ++d) {
       const Constraint c = bodies_[i].constraint[d];
-      sys.mass[nd * i + d] = !masses.empty() ? masses[nd * i + d]
-                             : d < nT_       ? bodies_[i].mass
-                                             : bodies_[i].inertia;
+      sys.mass[nd * i + d] = !masses.empty() ? masses[nd * i + d] : dofMass(i, d);
       sys.held[nd * i + d] = c == Constraint::Prescribed || c == Constraint::KeepVelocity;
     }
   const double omega = highestFrequency(ctx, sys, stiffnessProbe(ctx, forces), kPowerIterations);
@@ -198,25 +196,23 @@ std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function
     putBack();
     return {};
   }
-  std::vector<long> colour(n);
+  std::vector<std::vector<std::size_t>> members(static_cast<std::size_t>(colours));
   for (std::size_t i = 0; i < n; ++i) {
     const auto& g = ctx.globalCellOf(i);
     long c = 0;
     for (int a = dim - 1; a >= 0; --a) c = c * period + ((g[a] % period) + period) % period;
-    colour[i] = c * most + sub[i];
+    members[static_cast<std::size_t>(c * most + sub[i])].push_back(i);
   }
   std::vector<double> rows(n * nd, 0.0), u(nl * nd), f(n * nd), g(n * nd);
   long probes = 0;
-  for (long c = 0; c < colours; ++c) {
-    if (!ctx.any(std::find(colour.begin(), colour.end(), c) != colour.end())) continue;
+  for (const auto& colour : members) {
     for (int d = 0; d < nd; ++d) {
       std::fill(u.begin(), u.end(), 0.0);
       bool any = false;
-      for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t i : colour) {
         const Constraint k = bodies_[i].constraint[d];
-        if (colour[i] != c || k == Constraint::Prescribed || k == Constraint::KeepVelocity)
-          continue;
-        u[nd * i + d] = 1 / std::sqrt(d < nT_ ? bodies_[i].mass : bodies_[i].inertia);
+        if (k == Constraint::Prescribed || k == Constraint::KeepVelocity) continue;
+        u[nd * i + d] = 1 / std::sqrt(dofMass(i, d));
         any = true;
       }
       if (!ctx.any(any)) continue;
@@ -283,12 +279,11 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     if (rows_.empty() && !first)
       throw std::logic_error("quasi-static: the Gershgorin probes are no longer possible");
   }
-  auto mass = [&](std::size_t i, int d) { return d < nT_ ? bodies_[i].mass : bodies_[i].inertia; };
   // The Gershgorin mass of a DOF (a DOF with no stiffness, its interactions all broken,
   // takes the model's mass × the largest ratio of the first load step, omega2_).
   auto gershgorin = [&](std::size_t i, int d) {
-    const double g = std::sqrt(mass(i, d)) * rows_[nd * i + d];
-    return g > 0 ? g : mass(i, d) * omega2_;
+    const double g = std::sqrt(dofMass(i, d)) * rows_[nd * i + d];
+    return g > 0 ? g : dofMass(i, d) * omega2_;
   };
   if (first) {
     if (!rows_.empty()) {
@@ -296,7 +291,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
         double most = 0;
         for (std::size_t i = 0; i < n; ++i)
           for (int d = 0; d < nd; ++d)
-            most = std::max(most, rows_[nd * i + d] / std::sqrt(mass(i, d)));
+            most = std::max(most, rows_[nd * i + d] / std::sqrt(dofMass(i, d)));
         return most;
       }());
       if (omega2_ > 0) {
@@ -392,12 +387,10 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     for (int d = 0; d < nd; ++d) {
       const Constraint c = bodies_[i].constraint[d];
       lambda[nd * i + d] = mu_ > 0 ? gershgorin(i, d) * mu_ * kGershgorinSafety / 4
-                                   : mass(i, d) * omega2_ * kSafety / 4;
+                                   : dofMass(i, d) * omega2_ * kSafety / 4;
       free[nd * i + d] = c == Constraint::Free || c == Constraint::Resting;
     }
-  auto weight = [&](std::size_t i, int d) {
-    return 1 / (d < nT_ ? bodies_[i].mass : bodies_[i].inertia);
-  };
+  auto weight = [&](std::size_t i, int d) { return 1 / dofMass(i, d); };
   auto onSupport = [&](std::size_t i, int d) {
     return bodies_[i].constraint[d] == Constraint::Resting &&
            P.alter(i)[pos_[d]] <= P.fixed(i)[pos_[d]];

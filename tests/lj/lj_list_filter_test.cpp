@@ -1,6 +1,6 @@
 // The list build's distance filter: the portable loop against the distances themselves, and
-// the AVX-512 one (chosen at load time where the processor has it) against the portable one,
-// on ranges of every length modulo 8 and candidates placed on and around the radius.
+// the filter the build chooses (AVX-512 where the processor has it) against the portable
+// one, on ranges of every length modulo 8 and candidates placed on and around the radius.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -33,9 +33,7 @@ Candidates around(std::size_t n, double r, std::mt19937_64& rng) {
   return c;
 }
 
-using Filter = std::size_t (*)(const double*, const double*, const double*, const std::uint32_t*,
-                               std::size_t, std::size_t, double, double, double, double,
-                               std::uint32_t*);
+using Filter = pdq::lj::KeepNear;
 
 std::vector<std::uint32_t> run(Filter f, const Candidates& c, std::size_t from, std::size_t to,
                                double r2) {
@@ -59,8 +57,9 @@ TEST(LjListFilter, PortableKeepsExactlyThoseCloserThanTheRadius) {
     }
 }
 
-TEST(LjListFilter, Avx512KeepsWhatThePortableLoopKeeps) {
-  if (!__builtin_cpu_supports("x86-64-v4")) GTEST_SKIP() << "this processor has no AVX-512";
+TEST(LjListFilter, ChosenFilterKeepsWhatThePortableLoopKeeps) {
+  const Filter chosen = pdq::lj::chosenKeepNear();
+  EXPECT_EQ(chosen == pdq::lj::keepNearAvx512, __builtin_cpu_supports("x86-64-v4") != 0);
   std::mt19937_64 rng(12);
   const double r = 1.3;
   const Candidates c = around(300, r, rng);
@@ -68,7 +67,7 @@ TEST(LjListFilter, Avx512KeepsWhatThePortableLoopKeeps) {
   for (std::size_t from : {0u, 1u, 5u, 8u, 13u})
     for (std::size_t to = from; to <= 300; to += 1 + to % 7) {
       const auto want = run(pdq::lj::keepNear, c, from, to, r * r);
-      EXPECT_EQ(run(pdq::lj::keepNearAvx512, c, from, to, r * r), want) << from << ".." << to;
+      EXPECT_EQ(run(chosen, c, from, to, r * r), want) << from << ".." << to;
       kept += want.size();
     }
   EXPECT_GT(kept, 0u);

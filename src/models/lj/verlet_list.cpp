@@ -18,9 +18,13 @@ std::size_t keepNear(const double* cx, const double* cy, const double* cz, const
   return m;
 }
 
+KeepNear chosenKeepNear() {
+  return __builtin_cpu_supports("x86-64-v4") ? keepNearAvx512 : keepNear;
+}
+
 void VerletList::build(const Context& ctx, const double* pos, std::size_t stride, double radius) {
   const std::size_t n = ctx.particles.owned();
-  static const auto keep = __builtin_cpu_supports("x86-64-v4") ? keepNearAvx512 : keepNear;
+  static const KeepNear keep = chosenKeepNear();
 
   const double r2max = radius * radius;
   start_.assign(n + 1, 0);

@@ -28,6 +28,13 @@ std::size_t keepNearAvx512(const double* cx, const double* cy, const double* cz,
                            const std::uint32_t* id, std::size_t from, std::size_t to, double x,
                            double y, double z, double r2max, std::uint32_t* out);
 
+// The filter the list build uses: keepNearAvx512 where the processor has AVX-512, else
+// keepNear.
+using KeepNear = std::size_t (*)(const double*, const double*, const double*, const std::uint32_t*,
+                                 std::size_t, std::size_t, double, double, double, double,
+                                 std::uint32_t*);
+KeepNear chosenKeepNear();
+
 class VerletList {
  public:
   // pos: packed positions of the local particles, `stride` doubles a row (x, y, z first).
