@@ -77,6 +77,14 @@ class Context {
   double min(double v) const { return comm_.min(v); }
   long count(long v) const { return comm_.sum(v); }
   bool any(bool v) const { return comm_.any(v); }
+  // Every rank's bytes on rank 0 in rank order (rank r's at [starts[r], starts[r + 1])), and
+  // rank 0's bytes on every rank: for the engine's own global solves.
+  std::vector<char> gather(const std::vector<char>& block, std::vector<std::size_t>& starts) const {
+    return comm_.gather(block, starts);
+  }
+  std::vector<char> broadcast(std::vector<char> data) const {
+    return comm_.broadcast(std::move(data));
+  }
 
   // Ends the run after this step (the reason is logged). Must be called on every rank
   // alike, i.e. decided from global reductions.

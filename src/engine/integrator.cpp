@@ -69,6 +69,13 @@ std::string writeLoading(const Loading& l) {
   return out;
 }
 
+Solver::Masses readMasses(const Params& p, const std::string& key) {
+  const std::string m = p.choice(key, "stiffness", {"stiffness", "model", "assembled"});
+  return m == "model"       ? Solver::Masses::Model
+         : m == "assembled" ? Solver::Masses::Assembled
+                            : Solver::Masses::Stiffness;
+}
+
 Solver readSolver(const Params& p, const std::string& kindKey) {
   Solver s;
   const std::string kind = p.choice(kindKey, "dynamic", {"dynamic", "quasi_static"});
@@ -105,7 +112,7 @@ Solver readSolver(const Params& p, const std::string& kindKey) {
     throw InputError(p.raw("max_cut_backs")->file, p.raw("max_cut_backs")->line,
                      "max_cut_backs must be between 0 and 50 (halvings of the increment)");
   s.maxCutBacks = static_cast<int>(cuts);
-  s.modelMasses = p.choice("masses", "stiffness", {"stiffness", "model"}) == "model";
+  s.masses = readMasses(p, "masses");
   s.peakTolerance = p.number("peak_tolerance", s.peakTolerance);
   if (!(s.peakTolerance >= 0))
     throw InputError(p.raw("peak_tolerance")->file, p.raw("peak_tolerance")->line,
@@ -160,7 +167,8 @@ std::string writeSolver(const Solver& s) {
   if (s.maxBroken != none.maxBroken) out += "max_broken " + std::to_string(s.maxBroken) + "\n";
   if (s.maxCutBacks != none.maxCutBacks)
     out += "max_cut_backs " + std::to_string(s.maxCutBacks) + "\n";
-  if (s.modelMasses) out += "masses model\n";
+  if (s.masses == Solver::Masses::Model) out += "masses model\n";
+  if (s.masses == Solver::Masses::Assembled) out += "masses assembled\n";
   if (s.peakTolerance != none.peakTolerance)
     out += "peak_tolerance " + numberText(s.peakTolerance) + "\n";
   if (s.control.active()) {
@@ -220,20 +228,23 @@ void Integrator::resolve(const Schema& s) {
 
 std::vector<double> Integrator::state() const {
   if (omega2_ < 0) return {holdDamping_};
-  return {holdDamping_, omega2_,     iterations_, path_.progress, path_.increment, path_.easy,
-          path_.beyond, path_.first, mu_};
+  return {
+      holdDamping_, omega2_,     iterations_, path_.progress,        path_.increment, path_.easy,
+      path_.beyond, path_.first, mu_,         assembled_ ? 1.0 : 0.0};
 }
 
 void Integrator::setState(std::span<const double> s) {
-  if (s.size() != 1 && (s.size() < 6 || s.size() > 9))
-    throw std::logic_error("integrator state: one or six to nine values expected");
+  if (s.size() != 1 && (s.size() < 6 || s.size() > 10))
+    throw std::logic_error("integrator state: one or six to ten values expected");
   holdDamping_ = s[0];
-  // Six to eight: written before the load path kept `beyond` and `first`, and before the
-  // Gershgorin masses (μ = 0: the model's masses, as those runs had).
+  // Six to nine: written before the load path kept `beyond` and `first`, before the
+  // Gershgorin masses (μ = 0: the model's masses, as those runs had) and before the
+  // assembled stiffness.
   if (s.size() >= 6) {
     omega2_ = s[1], iterations_ = s[2];
     path_ = {s[3], s[4], s[5], s.size() >= 7 ? s[6] : 0.0, s.size() >= 8 ? s[7] : 0.0};
-    mu_ = s.size() == 9 ? s[8] : 0.0;
+    mu_ = s.size() >= 9 ? s[8] : 0.0;
+    assembled_ = s.size() == 10 && s[9] != 0;
   }
 }
 

@@ -27,12 +27,14 @@
 #include <array>
 #include <cstdint>
 #include <functional>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "engine/params.hpp"
 #include "engine/schema.hpp"
+#include "engine/stiffness_matrix.hpp"
 
 namespace pdq {
 
@@ -91,9 +93,12 @@ struct Solver {
   // equilibrium near the last one lies within peakTolerance × the last equilibrium's
   // (0: only when the smallest increment reaches it), as the bisection's bracket does.
   double peakTolerance = 0;
-  // Fictitious masses: each DOF's Gershgorin bound of the stiffness (false, the default)
-  // or the model's masses and inertias (true).
-  bool modelMasses = false;
+  // Fictitious masses: each DOF's Gershgorin bound of the stiffness (the default), the
+  // model's masses and inertias, or the assembled stiffness matrix, which turns the
+  // relaxation into a modified Newton iteration (docs/quasi-static.md, "Assembled
+  // stiffness").
+  enum class Masses { Stiffness, Model, Assembled };
+  Masses masses = Masses::Stiffness;
   DisplacementControl control;
   int line = 0;  // of max_iterations (or of the kind) in the run's input, for the error when a
                  // load step does not converge in time
@@ -105,6 +110,8 @@ struct Solver {
 // the keys for pdQInput.dat, the displacement control as control_axis, control_displacement and
 // control_ids (read back by readControl; a scenario gives it as [solver.control]).
 Solver readSolver(const Params& p, const std::string& kindKey);
+// The fictitious masses from the key `key`: "stiffness" (the default), "model" or "assembled".
+Solver::Masses readMasses(const Params& p, const std::string& key);
 std::string writeSolver(const Solver& s);
 // The displacement control's axis (x, y or z) and displacement from the keys `prefix`axis
 // and `prefix`displacement (both or neither), its line that of the axis.
@@ -227,7 +234,10 @@ class Integrator {
   // the model's stiffness at the current state, from finite differences of its forces with
   // the particles coloured so that each probe reaches every row from one particle at most;
   // empty when that takes too many probes (docs/quasi-static.md, "Fictitious masses").
-  std::vector<double> gershgorinRows(Context& ctx, const std::function<void()>& forces);
+  // With `entries`, also the entries K_ij of the free rows (central differences), when the
+  // model's forces reach no further than the nearby cells (one force pass).
+  std::vector<double> gershgorinRows(Context& ctx, const std::function<void()>& forces,
+                                     std::vector<StiffnessEntry>* entries = nullptr);
   // A finite-difference probe of the stiffness at the current state: f = −K u for a
   // displacement field u given at every local particle (forces and moments of the owned
   // particles); the state is put back after each probe. `passes`, when given, is set to
@@ -273,6 +283,11 @@ class Integrator {
   double omega2_ = -1, mu_ = 0;
   std::vector<double> rows_;  // the Gershgorin rows and the load factor of the equilibrium
   double rowsAt_ = -1;        // they were probed at
+  // The assembled stiffness (Masses::Assembled, chosen at the first load step and saved in
+  // restart files), factorised with the rows; null when it is not positive definite.
+  bool assembled_ = false;
+  std::shared_ptr<StiffnessMatrix> matrix_;
+  std::vector<StiffnessEntry> entries_;  // its entries (this rank's rows)
   double iterations_ = 0;
   LoadPath path_;
 };

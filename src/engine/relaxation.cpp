@@ -30,6 +30,7 @@
 #include "engine/frequency.hpp"
 #include "engine/integrator.hpp"
 #include "engine/model.hpp"
+#include "engine/stiffness_matrix.hpp"
 
 namespace pdq {
 
@@ -63,6 +64,9 @@ constexpr double kOvershoot = 2;
 // max_iterations): the first, an elastic relaxation from rest, measures how slowly the
 // lattice's lowest modes relax, which grows with the particles along the structure.
 constexpr double kFirstStepsPerCap = 10;
+// The assembled stiffness's diagonal shift, a share of the diagonal masses: it keeps a
+// fragment that broke free (a rigid motion, no stiffness) from making K̂ singular.
+constexpr double kAssembledShift = 1e-6;
 }  // namespace
 
 long Integrator::iterationCap(const Solver& solver) const {
@@ -138,7 +142,8 @@ double Integrator::highestFrequencySquared(Context& ctx, const std::function<voi
   return omega * omega;
 }
 
-std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function<void()>& forces) {
+std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function<void()>& forces,
+                                               std::vector<StiffnessEntry>* entries) {
   Particles& P = ctx.particles;
   const std::size_t n = P.owned(), nl = P.local();
   const int nd = nT_ + nR_, dim = ctx.dim();
@@ -203,6 +208,17 @@ std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function
     for (int a = dim - 1; a >= 0; --a) c = c * period + ((g[a] % period) + period) % period;
     members[static_cast<std::size_t>(c * most + sub[i])].push_back(i);
   }
+  // The entries: a probe's response at row i comes from the one particle it moved that is
+  // i or near i (one force pass: the model reaches no further than the nearby cells).
+  if (entries) {
+    entries->clear();
+    if (passes != 1) entries = nullptr;
+  }
+  std::vector<std::vector<std::size_t>> nearby(entries ? n : 0);
+  for (std::size_t i = 0; i < nearby.size(); ++i) {
+    nearby[i].push_back(i);
+    ctx.forEachNearby(i, [&](std::size_t j) { nearby[i].push_back(j); });
+  }
   std::vector<double> rows(n * nd, 0.0), u(nl * nd), f(n * nd), g(n * nd);
   long probes = 0;
   for (const auto& colour : members) {
@@ -224,6 +240,26 @@ std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function
       for (std::size_t k = 0; k < n * nd; ++k)
         rows[k] += std::max(std::fabs(f[k]), std::fabs(g[k]));
       ++probes;
+      if (!entries) continue;
+      // f = −K u and g = K u: K_ij = (g_i − f_i) / (2 u_j), j the moved particle near i.
+      for (std::size_t i = 0; i < n; ++i) {
+        std::size_t j = nl;
+        for (int di = 0; di < nd; ++di) {
+          const std::size_t k = nd * i + di;
+          const Constraint c = bodies_[i].constraint[di];
+          if (g[k] == f[k] || c == Constraint::Prescribed || c == Constraint::KeepVelocity)
+            continue;
+          if (j == nl)
+            for (std::size_t m : nearby[i])
+              if (u[nd * m + d] != 0) {
+                j = m;
+                break;
+              }
+          if (j == nl) continue;
+          entries->push_back(
+              {P.gid(i), P.gid(j), di, d, (g[k] - f[k]) / (2 * std::fabs(u[nd * j + d]))});
+        }
+      }
     }
   }
   putBack();
@@ -272,9 +308,25 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   // Λ = M ω_max² kSafety / 4 with ω_max² of M⁻¹K. The first load step's choice holds for
   // the run, restarts included (μ > 0: Gershgorin masses).
   const bool first = omega2_ < 0;
-  if (first ? !solver.modelMasses : mu_ > 0) {
+  if (first && solver.masses == Solver::Masses::Assembled) {
+    // Supports that only push make the unknowns change as particles lift off or come to
+    // rest (a contact problem the modified Newton iteration would chatter on).
+    bool resting = false;
+    for (std::size_t i = 0; i < n; ++i)
+      for (int d = 0; d < nd; ++d) resting |= bodies_[i].constraint[d] == Constraint::Resting;
+    assembled_ = !ctx.any(resting);
+    if (!assembled_)
+      ctx.warn(
+          "quasi-static: masses = \"assembled\" does not take supports that only push "
+          "(bearings); the Gershgorin masses are used");
+  }
+  bool probed = false;
+  if (first ? solver.masses != Solver::Masses::Model : mu_ > 0) {
     // A try after a cut-back starts from the same equilibrium: its rows are at hand.
-    if (first || rowsAt_ != previous || rows_.size() != n * nd) rows_ = gershgorinRows(ctx, forces);
+    if (first || rowsAt_ != previous || rows_.size() != n * nd) {
+      rows_ = gershgorinRows(ctx, forces, assembled_ ? &entries_ : nullptr);
+      probed = true;
+    }
     rowsAt_ = previous;
     if (rows_.empty() && !first)
       throw std::logic_error("quasi-static: the Gershgorin probes are no longer possible");
@@ -390,6 +442,33 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
                                    : dofMass(i, d) * omega2_ * kSafety / 4;
       free[nd * i + d] = c == Constraint::Free || c == Constraint::Resting;
     }
+  // The assembled stiffness, factorised with the rows it was probed with; a load step whose
+  // matrix is not positive definite (a mechanism) relaxes with the diagonal masses.
+  if (assembled_ && probed) {
+    matrix_.reset();
+    if (first && !ctx.any(!entries_.empty())) {
+      assembled_ = false;
+      ctx.warn(
+          "quasi-static: masses = \"assembled\" needs a model whose forces reach no "
+          "further than the nearby cells, and few enough probes; the diagonal masses are "
+          "used");
+    }
+    if (ctx.any(!entries_.empty())) {
+      std::vector<Gid> gids(n);
+      for (std::size_t i = 0; i < n; ++i) gids[i] = P.gid(i);
+      auto m = std::make_shared<StiffnessMatrix>();
+      const bool definite = m->factorise(ctx, gids, nd, free, entries_, lambda, kAssembledShift);
+      if (ctx.root())
+        ctx.log() << "quasi-static: assembled stiffness, " << m->unknowns() << " unknowns, "
+                  << m->factorNonzeros() << " nonzeros in its factor"
+                  << (definite ? "\n"
+                               : ", not positive definite: this load step relaxes with "
+                                 "the diagonal masses\n");
+      if (definite) matrix_ = std::move(m);
+    }
+  }
+  const bool newton = assembled_ && matrix_;
+  std::vector<double> step(newton ? n * nd : 0);
   auto weight = [&](std::size_t i, int d) { return 1 / dofMass(i, d); };
   auto onSupport = [&](std::size_t i, int d) {
     return bodies_[i].constraint[d] == Constraint::Resting &&
@@ -438,7 +517,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
         const double f = dofForce(P, i, d, factor), w = weight(i, d);
         if (free[k] && !(onSupport(i, d) && f < 0)) {
           r2 += f * f * w;
-          acc[k] = f / lambda[k];
+          acc[k] = newton ? f : f / lambda[k];
         } else {
           R2 += f * f * w;
           acc[k] = 0;
@@ -480,11 +559,36 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     if (look) {
       const double along = loadTotal > 0 ? sums[kWork].value() / loadTotal : 0.0;
       if (std::fabs(along) > kRunaway * std::fabs(lastAlong) ||
-          (stepping && std::fabs(along - lastAlong) > kOvershoot * stepLimit)) {
+          (stepping && std::fabs(along - lastAlong) > (newton ? 1.0 : kOvershoot) * stepLimit)) {
         out.converged = false;
         out.runaway = true;
         break;
       }
+    }
+    if (newton) {
+      // Modified Newton: the step K̂⁻¹ F of the out-of-balance forces.
+      matrix_->solve(ctx, acc, step);
+#pragma omp parallel for schedule(static)
+      for (long i = 0; i < nOwned; ++i) {
+        double* a = P.alter(i);
+        const double* X = P.fixed(i);
+        double phi[3] = {0, 0, 0};
+        for (int d = 0; d < nd; ++d) {
+          const std::size_t k = nd * i + d;
+          if (!free[k]) continue;
+          if (d >= nLinear) {
+            phi[d - nT_] = step[k];
+            continue;
+          }
+          a[pos_[d]] += step[k];
+          const double ref = d < nT_ ? X[pos_[d]] : 0.0;
+          if (bodies_[i].constraint[d] == Constraint::Resting && a[pos_[d]] < ref)
+            a[pos_[d]] = ref;  // on the support
+        }
+        if (rotation_ == Rotation::Spatial) turn(P, i, phi);
+      }
+      exchange();
+      continue;
     }
     // Kinetic damping: when the kinetic energy of the undamped step would fall, the motion
     // has passed a peak and starts again from rest.

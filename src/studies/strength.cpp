@@ -304,6 +304,7 @@ Result staticRun(const Case& c, double hi, Comm& comm, const StaticOptions& opt)
   run.solver.maxBroken = opt.maxBroken;
   run.solver.maxCutBacks = opt.maxCutBacks;
   run.solver.peakTolerance = opt.peakTolerance;
+  run.solver.masses = opt.masses;
   run.steps = opt.loadSteps;
   Trial tr;
   tr.index = 1;

@@ -1,0 +1,57 @@
+#pragma once
+// The quasi-static solver's assembled stiffness (docs/quasi-static.md, "Assembled
+// stiffness"): entries K_ij of the free degrees of freedom, probed by finite differences on
+// every rank, gathered on rank 0, made symmetric and factorised there (sparse LDLᵀ with an
+// approximate-minimum-degree ordering, Eigen), and solves with it: a right-hand side given
+// per owned DOF on every rank, the solution sent back to each. Rows and columns are
+// ordered by global ID, so the matrix, its factors and every solution are the same bits on
+// any number of ranks.
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "engine/particles.hpp"
+
+namespace pdq {
+
+class Context;
+
+// One entry K_ij: row DOF `rowDof` of particle `row`, column DOF `colDof` of particle `col`.
+struct StiffnessEntry {
+  Gid row, col;
+  int rowDof, colDof;
+  double value;
+};
+
+class StiffnessMatrix {
+ public:
+  using Entry = StiffnessEntry;
+  StiffnessMatrix();
+  ~StiffnessMatrix();
+  StiffnessMatrix(const StiffnessMatrix&) = delete;
+  StiffnessMatrix& operator=(const StiffnessMatrix&) = delete;
+
+  // Collective. `gids` are the owned particles (in their local order) with `dofs` DOFs
+  // each; `free` says which DOFs are unknowns, `entries` are this rank's rows (free ones
+  // only). K̂ = (K + Kᵀ)/2 + `shift` × diag(`fallback`), and a free DOF whose row is empty
+  // takes `fallback` as its diagonal. Returns whether K̂ is positive definite (on every
+  // rank); the solves need it.
+  bool factorise(Context& ctx, std::span<const Gid> gids, int dofs,
+                 std::span<const unsigned char> free, const std::vector<Entry>& entries,
+                 std::span<const double> fallback, double shift);
+  // Collective: x = K̂⁻¹ b over the owned DOFs (b and x: `dofs` per owned particle; the
+  // DOFs that are not free get 0).
+  void solve(Context& ctx, std::span<const double> b, std::span<double> x) const;
+  // The free DOFs and the stored factor's nonzeros (rank 0; 0 elsewhere).
+  long unknowns() const;
+  long factorNonzeros() const;
+
+ private:
+  struct Factor;
+  std::unique_ptr<Factor> factor_;  // rank 0
+  std::size_t values_ = 0;          // this rank's values per solve (owned × dofs)
+  int dofs_ = 0;
+  std::vector<std::size_t> at_;  // per owned particle: its place in the order of global IDs
+};
+
+}  // namespace pdq
