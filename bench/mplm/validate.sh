@@ -10,8 +10,8 @@
 # docs/mplm/<example>.png: the damage at failure. Reports and logs stay in the work folder
 # printed at the end.
 # Usage: bench/mplm/validate.sh [build-dir] [ranks] [examples...]
-# METHODS="quasi_static" runs one method only; QS_MASSES=assembled gives the quasi-static
-# runs that fictitious mass (the strength search's qs_masses).
+# QS_MASSES=assembled (or model) gives the quasi-static runs those fictitious masses (the
+# strength search's qs_masses).
 #   METHODS="quasi_static bisection" (default) or either one alone (the other's columns say
 #   "not run"). ~25 minutes for the bisection on 2 cores, a few for the quasi-static runs.
 # The 3D members are not in the default list (hours each, docs/mplm3d.md): name them,
