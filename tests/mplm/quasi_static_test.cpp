@@ -150,15 +150,13 @@ TEST(QuasiStatic, CantileverRelaxesToTheLinearStaticSolution) {
 }
 
 // With the assembled stiffness the relaxation is a modified Newton iteration: on the linear
-// lattice it converges in tens of iterations where the dynamic relaxation takes thousands
-// (docs/quasi-static.md, "Assembled stiffness").
+// lattice its first step is the solution but for the finite differences' error, where the
+// dynamic relaxation takes thousands of iterations (docs/quasi-static.md, "Assembled
+// stiffness").
 TEST(QuasiStatic, AssembledStiffnessSolvesTheCantileverInAFewIterations) {
   const double its = expectLinearStaticSolution(Solver::Masses::Assembled, "qs_cantilever_asm");
-  const double relaxation =
-      expectLinearStaticSolution(Solver::Masses::Stiffness, "qs_cantilever_dr");
   EXPECT_GE(its, 1);
-  EXPECT_LE(its, 30);
-  EXPECT_LT(30 * its, relaxation);
+  EXPECT_LE(its, 3);
 }
 
 // With damage: at every load step's converged state, the forces evaluated again (with the
