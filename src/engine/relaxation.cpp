@@ -69,6 +69,9 @@ constexpr double kFirstStepsPerCap = 10;
 // far below a long member's lowest stiffness (at 1e-6 a cantilever's bending mode was 36 %
 // too stiff: 15 Newton iterations instead of 2).
 constexpr double kAssembledShift = 1e-12;
+// The assembled stiffness is used while its factor holds at most this many times the
+// matrix's own stored entries, so that a solve costs a few force evaluations at most.
+constexpr double kMaxFill = 16;
 }  // namespace
 
 long Integrator::iterationCap(const Solver& solver) const {
@@ -448,25 +451,30 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   // matrix is not positive definite (a mechanism) relaxes with the diagonal masses.
   if (assembled_ && probed) {
     matrix_.reset();
-    if (first && !ctx.any(!entries_.empty())) {
-      assembled_ = false;
-      ctx.warn(
-          "quasi-static: masses = \"assembled\" needs a model whose forces reach no "
-          "further than the nearby cells, and few enough probes; the diagonal masses are "
-          "used");
-    }
-    if (ctx.any(!entries_.empty())) {
+    const bool any = ctx.any(!entries_.empty());
+    auto m = std::make_shared<StiffnessMatrix>();
+    StiffnessMatrix::Outcome outcome = StiffnessMatrix::Outcome::TooLarge;
+    if (any) {
       std::vector<Gid> gids(n);
       for (std::size_t i = 0; i < n; ++i) gids[i] = P.gid(i);
-      auto m = std::make_shared<StiffnessMatrix>();
-      const bool definite = m->factorise(ctx, gids, nd, free, entries_, lambda, kAssembledShift);
+      outcome = m->factorise(ctx, gids, nd, free, entries_, lambda, kAssembledShift, kMaxFill);
       if (ctx.root())
         ctx.log() << "quasi-static: assembled stiffness, " << m->unknowns() << " unknowns, "
-                  << m->factorNonzeros() << " nonzeros in its factor"
-                  << (definite ? "\n"
-                               : ", not positive definite: this load step relaxes with "
-                                 "the diagonal masses\n");
-      if (definite) matrix_ = std::move(m);
+                  << m->matrixNonzeros() << " stored entries, " << m->factorNonzeros()
+                  << " in its factor"
+                  << (outcome == StiffnessMatrix::Outcome::NotDefinite
+                          ? ", not positive definite: this load step relaxes with the diagonal "
+                            "masses\n"
+                          : "\n");
+    }
+    if (outcome == StiffnessMatrix::Outcome::Factorised) matrix_ = std::move(m);
+    if (first && outcome == StiffnessMatrix::Outcome::TooLarge) {
+      assembled_ = false;
+      ctx.warn(any ? "quasi-static: masses = \"assembled\": the stiffness's factor would fill "
+                     "in too much (a 3D lattice of this size); the Gershgorin masses are used"
+                   : "quasi-static: masses = \"assembled\" needs a model whose forces reach no "
+                     "further than the nearby cells, and few enough probes; the diagonal "
+                     "masses are used");
     }
   }
   const bool newton = assembled_ && matrix_;

@@ -23,28 +23,38 @@ void take(const char*& in, T* data, std::size_t n) {
   if (n) std::memcpy(data, in, n * sizeof(T));
   in += n * sizeof(T);
 }
+
+// Eigen's LDLᵀ, which also tells the size of its factor once the pattern is analysed.
+struct Ldlt
+    : Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> {
+  long predictedNonzeros() const {
+    long n = 0;
+    for (Eigen::Index k = 0; k < m_nonZerosPerCol.size(); ++k) n += m_nonZerosPerCol[k];
+    return n;
+  }
+};
 }  // namespace
 
 struct StiffnessMatrix::Factor {
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt;
+  Ldlt ldlt;
   std::vector<long> row;  // per gathered DOF (rank order, then owned order): unknown or -1
   std::vector<long> out;  // per gathered DOF: where it stands in the solution sent back
   std::size_t total = 0;  // gathered DOFs
-  long unknowns = 0;
+  long unknowns = 0, entries = 0, fill = 0;  // K̂'s stored entries, its factor's
 };
 
 StiffnessMatrix::StiffnessMatrix() = default;
 StiffnessMatrix::~StiffnessMatrix() = default;
 
 long StiffnessMatrix::unknowns() const { return factor_ ? factor_->unknowns : 0; }
-long StiffnessMatrix::factorNonzeros() const {
-  return factor_ ? static_cast<long>(factor_->ldlt.matrixL().nestedExpression().nonZeros()) : 0;
-}
+long StiffnessMatrix::matrixNonzeros() const { return factor_ ? factor_->entries : 0; }
+long StiffnessMatrix::factorNonzeros() const { return factor_ ? factor_->fill : 0; }
 
-bool StiffnessMatrix::factorise(Context& ctx, std::span<const Gid> gids, int dofs,
-                                std::span<const unsigned char> free,
-                                const std::vector<Entry>& entries, std::span<const double> fallback,
-                                double shift) {
+StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<const Gid> gids,
+                                                    int dofs, std::span<const unsigned char> free,
+                                                    const std::vector<Entry>& entries,
+                                                    std::span<const double> fallback, double shift,
+                                                    double maxFill) {
   const std::size_t n = gids.size();
   values_ = n * dofs;
   std::vector<char> mine;
@@ -127,16 +137,23 @@ bool StiffnessMatrix::factorise(Context& ctx, std::span<const Gid> gids, int dof
       if (i >= j) triplets.emplace_back(static_cast<int>(i), static_cast<int>(j), v);
     Eigen::SparseMatrix<double> K(unknowns, unknowns);
     K.setFromTriplets(triplets.begin(), triplets.end());
-    F.ldlt.compute(K);
-    const bool ok =
-        F.ldlt.info() == Eigen::Success && unknowns > 0 && F.ldlt.vectorD().minCoeff() > 0;
-    reply.push_back(ok ? 1 : 0);
+    F.ldlt.analyzePattern(K);
+    F.entries = K.nonZeros();
+    F.fill = F.ldlt.predictedNonzeros();
+    Outcome outcome = Outcome::TooLarge;
+    if (static_cast<double>(F.fill) <= maxFill * static_cast<double>(F.entries)) {
+      F.ldlt.factorize(K);
+      const bool ok =
+          F.ldlt.info() == Eigen::Success && unknowns > 0 && F.ldlt.vectorD().minCoeff() > 0;
+      outcome = ok ? Outcome::Factorised : Outcome::NotDefinite;
+    }
+    reply.push_back(static_cast<char>(outcome));
     std::vector<Gid> sorted(order.size());
     for (std::size_t p = 0; p < order.size(); ++p) sorted[p] = order[p].first;
     append(reply, sorted.data(), sorted.size());
   }
   reply = ctx.broadcast(std::move(reply));
-  const bool ok = reply.at(0) != 0;
+  const auto outcome = static_cast<Outcome>(reply.at(0));
   const std::size_t nAll = (reply.size() - 1) / sizeof(Gid);
   std::vector<Gid> sorted(nAll);
   const char* in = reply.data() + 1;
@@ -149,7 +166,7 @@ bool StiffnessMatrix::factorise(Context& ctx, std::span<const Gid> gids, int dof
     at_[i] = static_cast<std::size_t>(it - sorted.begin());
   }
   dofs_ = dofs;
-  return ok;
+  return outcome;
 }
 
 void StiffnessMatrix::solve(Context& ctx, std::span<const double> b, std::span<double> x) const {

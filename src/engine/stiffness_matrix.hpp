@@ -34,16 +34,20 @@ class StiffnessMatrix {
   // Collective. `gids` are the owned particles (in their local order) with `dofs` DOFs
   // each; `free` says which DOFs are unknowns, `entries` are this rank's rows (free ones
   // only). K̂ = (K + Kᵀ)/2 + `shift` × diag(`fallback`), and a free DOF whose row is empty
-  // takes `fallback` as its diagonal. Returns whether K̂ is positive definite (on every
-  // rank); the solves need it.
-  bool factorise(Context& ctx, std::span<const Gid> gids, int dofs,
-                 std::span<const unsigned char> free, const std::vector<Entry>& entries,
-                 std::span<const double> fallback, double shift);
+  // takes `fallback` as its diagonal. Not factorised when its factor would hold over
+  // `maxFill` times K̂'s stored entries (the ordering's symbolic analysis says so first).
+  // The same outcome on every rank; the solves need Factorised.
+  enum class Outcome : char { Factorised, NotDefinite, TooLarge };
+  Outcome factorise(Context& ctx, std::span<const Gid> gids, int dofs,
+                    std::span<const unsigned char> free, const std::vector<Entry>& entries,
+                    std::span<const double> fallback, double shift, double maxFill);
   // Collective: x = K̂⁻¹ b over the owned DOFs (b and x: `dofs` per owned particle; the
   // DOFs that are not free get 0).
   void solve(Context& ctx, std::span<const double> b, std::span<double> x) const;
-  // The free DOFs and the stored factor's nonzeros (rank 0; 0 elsewhere).
+  // The free DOFs, K̂'s stored entries (its lower half) and its factor's (rank 0; 0
+  // elsewhere).
   long unknowns() const;
+  long matrixNonzeros() const;
   long factorNonzeros() const;
 
  private:
