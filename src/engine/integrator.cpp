@@ -69,8 +69,8 @@ std::string writeLoading(const Loading& l) {
   return out;
 }
 
-Solver::Masses readMasses(const Params& p, const std::string& key) {
-  const std::string m = p.choice(key, "stiffness", {"stiffness", "model", "assembled"});
+Solver::Masses readMasses(const Params& p, const std::string& key, const std::string& fallback) {
+  const std::string m = p.choice(key, fallback, {"stiffness", "model", "assembled"});
   return m == "model"       ? Solver::Masses::Model
          : m == "assembled" ? Solver::Masses::Assembled
                             : Solver::Masses::Stiffness;
@@ -112,7 +112,7 @@ Solver readSolver(const Params& p, const std::string& kindKey) {
     throw InputError(p.raw("max_cut_backs")->file, p.raw("max_cut_backs")->line,
                      "max_cut_backs must be between 0 and 50 (halvings of the increment)");
   s.maxCutBacks = static_cast<int>(cuts);
-  s.masses = readMasses(p, "masses");
+  s.masses = readMasses(p, "masses", "stiffness");
   s.peakTolerance = p.number("peak_tolerance", s.peakTolerance);
   if (!(s.peakTolerance >= 0))
     throw InputError(p.raw("peak_tolerance")->file, p.raw("peak_tolerance")->line,

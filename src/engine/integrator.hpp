@@ -110,8 +110,9 @@ struct Solver {
 // the keys for pdQInput.dat, the displacement control as control_axis, control_displacement and
 // control_ids (read back by readControl; a scenario gives it as [solver.control]).
 Solver readSolver(const Params& p, const std::string& kindKey);
-// The fictitious masses from the key `key`: "stiffness" (the default), "model" or "assembled".
-Solver::Masses readMasses(const Params& p, const std::string& key);
+// The fictitious masses from the key `key`: "stiffness", "model" or "assembled" (`fallback`
+// when it is not given).
+Solver::Masses readMasses(const Params& p, const std::string& key, const std::string& fallback);
 std::string writeSolver(const Solver& s);
 // The displacement control's axis (x, y or z) and displacement from the keys `prefix`axis
 // and `prefix`displacement (both or neither), its line that of the axis.

@@ -315,15 +315,24 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   const bool first = omega2_ < 0;
   if (first && solver.masses == Solver::Masses::Assembled) {
     // Supports that only push make the unknowns change as particles lift off or come to
-    // rest (a contact problem the modified Newton iteration would chatter on).
-    bool resting = false;
+    // rest (a contact problem the modified Newton iteration would chatter on); a structure
+    // that nothing holds (a plate pulled at both ends) has rigid motions that make the
+    // matrix singular, and its solves amplify round-off along them.
+    bool resting = false, held = false;
     for (std::size_t i = 0; i < n; ++i)
-      for (int d = 0; d < nd; ++d) resting |= bodies_[i].constraint[d] == Constraint::Resting;
-    assembled_ = !ctx.any(resting);
+      for (int d = 0; d < nd; ++d) {
+        const Constraint c = bodies_[i].constraint[d];
+        resting |= c == Constraint::Resting;
+        held |= c == Constraint::Prescribed || c == Constraint::KeepVelocity;
+      }
+    resting = ctx.any(resting);
+    held = ctx.any(held);
+    assembled_ = !resting && held;
     if (!assembled_)
-      ctx.warn(
-          "quasi-static: masses = \"assembled\" does not take supports that only push "
-          "(bearings); the Gershgorin masses are used");
+      ctx.warn(std::string("quasi-static: masses = \"assembled\" ") +
+               (resting ? "does not take supports that only push (bearings)"
+                        : "needs supports that hold the structure") +
+               "; the Gershgorin masses are used");
   }
   bool probed = false;
   if (first ? solver.masses != Solver::Masses::Model : mu_ > 0) {

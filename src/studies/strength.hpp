@@ -93,7 +93,7 @@ struct StaticOptions {
   long loadSteps = 10, maxIterations = 50000, maxBroken = 0;
   int maxCutBacks = 5;
   double peakTolerance = 0.02;  // the bisection's relTol: the same bracket
-  Solver::Masses masses = Solver::Masses::Stiffness;
+  Solver::Masses masses = Solver::Masses::Assembled;
   std::string outDir;
 };
 Result staticStrength(const Case& c, double hi, Comm& comm, const StaticOptions& opt);

@@ -97,7 +97,8 @@ void strengthStudy(const Scenario& sc, const Params& o, Comm& comm, bool resume,
   so.maxBroken = static_cast<long>(o.number("qs_max_broken", so.maxBroken, 0, 1e12));
   so.maxCutBacks = static_cast<int>(o.number("qs_max_cut_backs", so.maxCutBacks, 0, 50));
   so.peakTolerance = opt.relTol;  // the bracket the bisection stops at
-  so.masses = readMasses(o, "qs_masses");
+  // The assembled stiffness where it applies (supported 2D members): fewer iterations.
+  so.masses = readMasses(o, "qs_masses", "assembled");
   so.outDir = dir;
   o.checkAllUsed();  // before hours of trials
   const std::uint64_t search = strength::searchHash(scenarioHash(pb.source, pb.particles), o);
