@@ -17,8 +17,10 @@
 // each evaluation), so the transient of a load step's first iterations leaves no damage;
 // below it the damage of each evaluation is kept, so that softening localizes once and for
 // all instead of the relaxation revisiting which interaction cracks. The converged
-// evaluation's forces, computed with the damage it left, are the ones in equilibrium. See
-// docs/quasi-static.md.
+// evaluation's forces, computed with the damage it left, are the ones in equilibrium.
+// With masses = "assembled" the fictitious mass is the stiffness itself, assembled from the
+// same finite differences and factorised (engine/stiffness_matrix.hpp), and each iteration
+// is a modified Newton step x += K̂⁻¹ F instead. See docs/quasi-static.md.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -584,36 +586,17 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
         break;
       }
     }
+    // Modified Newton: the step K̂⁻¹ F of the out-of-balance forces. Kinetic damping: when
+    // the kinetic energy of the undamped step would fall, the motion has passed a peak and
+    // starts again from rest.
+    bool rest = false;
     if (newton) {
-      // Modified Newton: the step K̂⁻¹ F of the out-of-balance forces.
       matrix_->solve(ctx, acc, step);
-#pragma omp parallel for schedule(static)
-      for (long i = 0; i < nOwned; ++i) {
-        double* a = P.alter(i);
-        const double* X = P.fixed(i);
-        double phi[3] = {0, 0, 0};
-        for (int d = 0; d < nd; ++d) {
-          const std::size_t k = nd * i + d;
-          if (!free[k]) continue;
-          if (d >= nLinear) {
-            phi[d - nT_] = step[k];
-            continue;
-          }
-          a[pos_[d]] += step[k];
-          const double ref = d < nT_ ? X[pos_[d]] : 0.0;
-          if (bodies_[i].constraint[d] == Constraint::Resting && a[pos_[d]] < ref)
-            a[pos_[d]] = ref;  // on the support
-        }
-        if (rotation_ == Rotation::Spatial) turn(P, i, phi);
-      }
-      exchange();
-      continue;
+    } else {
+      const double now = sums[kMoving].value(), fromRest = sums[kStill].value();
+      rest = it == 0 || now < kinetic;
+      kinetic = rest ? fromRest : now;
     }
-    // Kinetic damping: when the kinetic energy of the undamped step would fall, the motion
-    // has passed a peak and starts again from rest.
-    const double now = sums[kMoving].value(), fromRest = sums[kStill].value();
-    const bool rest = it == 0 || now < kinetic;
-    kinetic = rest ? fromRest : now;
 #pragma omp parallel for schedule(static)
     for (long i = 0; i < nOwned; ++i) {
       double* a = P.alter(i);
@@ -622,12 +605,13 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       for (int d = 0; d < nd; ++d) {
         const std::size_t k = nd * i + d;
         if (!free[k]) continue;
-        v[k] = rest ? acc[k] / 2 : v[k] + acc[k];
+        if (!newton) v[k] = rest ? acc[k] / 2 : v[k] + acc[k];
+        const double move = newton ? step[k] : v[k];
         if (d >= nLinear) {
-          phi[d - nT_] = v[k];
+          phi[d - nT_] = move;
           continue;
         }
-        a[pos_[d]] += v[k];
+        a[pos_[d]] += move;
         const double ref = d < nT_ ? X[pos_[d]] : 0.0;
         if (bodies_[i].constraint[d] == Constraint::Resting && a[pos_[d]] < ref) {
           a[pos_[d]] = ref;  // on the support
