@@ -288,7 +288,6 @@ class Integrator {
   // restart files), factorised with the rows; null when it is not positive definite.
   bool assembled_ = false;
   std::shared_ptr<StiffnessMatrix> matrix_;
-  std::vector<StiffnessEntry> entries_;  // its entries (this rank's rows)
   double iterations_ = 0;
   LoadPath path_;
 };

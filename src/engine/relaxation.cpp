@@ -337,10 +337,11 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
                "; the Gershgorin masses are used");
   }
   bool probed = false;
+  std::vector<StiffnessEntry> entries;
   if (first ? solver.masses != Solver::Masses::Model : mu_ > 0) {
     // A try after a cut-back starts from the same equilibrium: its rows are at hand.
     if (first || rowsAt_ != previous || rows_.size() != n * nd) {
-      rows_ = gershgorinRows(ctx, forces, assembled_ ? &entries_ : nullptr);
+      rows_ = gershgorinRows(ctx, forces, assembled_ ? &entries : nullptr);
       probed = true;
     }
     rowsAt_ = previous;
@@ -462,13 +463,13 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   // matrix is not positive definite (a mechanism) relaxes with the diagonal masses.
   if (assembled_ && probed) {
     matrix_.reset();
-    const bool any = ctx.any(!entries_.empty());
+    const bool any = ctx.any(!entries.empty());
     auto m = std::make_shared<StiffnessMatrix>();
     StiffnessMatrix::Outcome outcome = StiffnessMatrix::Outcome::TooLarge;
     if (any) {
       std::vector<Gid> gids(n);
       for (std::size_t i = 0; i < n; ++i) gids[i] = P.gid(i);
-      outcome = m->factorise(ctx, gids, nd, free, entries_, lambda, kAssembledShift, kMaxFill);
+      outcome = m->factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxFill);
       if (ctx.root())
         ctx.log() << "quasi-static: assembled stiffness, " << m->unknowns() << " unknowns, "
                   << m->matrixNonzeros() << " stored entries, " << m->factorNonzeros()
