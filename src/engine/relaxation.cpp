@@ -544,7 +544,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
           R2 += f * f * w;
           acc[k] = 0;
         }
-        if (free[k]) {
+        if (free[k] && !newton) {  // kinetic damping's energies: none for Newton steps
           const double u = v[k] + acc[k];
           e += lambda[k] * u * u;
           e0 += lambda[k] * acc[k] * acc[k] / 4;
