@@ -72,6 +72,11 @@ class Model {
   // (sorted by partner ID) says false; the engine may then take fewer, larger cells to
   // balance the ranks better.
   virtual bool resultsDependOnCells() const { return true; }
+  // True when the forces on a particle depend on nothing but its own state and its bonds'
+  // partners', per force pass (no interaction with particles it is not bonded to): the
+  // quasi-static solver's stiffness probes then colour the bond graph instead of the cells
+  // (engine/bond_colouring.hpp), far fewer probes.
+  virtual bool forcesFromBonds() const { return false; }
 
   virtual void setup(Context&) {}
   virtual void prepare(Context&) {}

@@ -27,6 +27,7 @@
 #include <memory>
 #include <sstream>
 
+#include "engine/bond_colouring.hpp"
 #include "engine/context.hpp"
 #include "engine/error.hpp"
 #include "engine/frequency.hpp"
@@ -51,6 +52,9 @@ constexpr double kProbe = 1e-7;
 // Per-DOF fictitious masses need one probe per colour and DOF each way; beyond this many (3D
 // peridynamics), the masses are the model's scaled by ω_max² instead.
 constexpr long kMaxProbes = 5000;
+// The bond graph is coloured on rank 0 while it holds at most this many bonds (16 bytes
+// each in transit); a larger one takes the cells' colouring.
+constexpr double kMaxColouredBonds = 1 << 24;
 // Damage is kept from the evaluations whose out-of-balance force is below this share of the
 // applied load (or reactions).
 constexpr double kSettled = 1e-2;
@@ -177,46 +181,63 @@ std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function
   }
   long passes = 1;
   auto probe = stiffnessProbe(ctx, forces, &passes);
-  // Particles of one colour lie in cells `period` apart along some axis, so at least
-  // 2 × passes undivided cells (each at least a horizon) apart: a row, which reaches a
-  // horizon per force pass, meets one of them at most (two at exactly twice its reach
-  // apart would both be at the horizon's very edge). Within a cell they differ by their
-  // rank of global ID.
-  const int period = 2 * static_cast<int>(passes) * ctx.cellDivisions() + 1;
-  for (int a = 0; a < dim; ++a)
-    if (ctx.domain().periodic[a] && ctx.globalCells(a) % period != 0) {
+  // The colours, each probed at once: with a model whose forces come from its bonds alone
+  // (one force pass), a distance-2 colouring of the bond graph; otherwise particles of one
+  // colour lie in cells `period` apart along some axis, so at least 2 × passes undivided
+  // cells (each at least a horizon) apart: a row, which reaches a horizon per force pass,
+  // meets one of them at most (two at exactly twice its reach apart would both be at the
+  // horizon's very edge). Within a cell they differ by their rank of global ID.
+  const bool byBonds = model_.forcesFromBonds() && passes == 1 && ctx.sumOwned([&](std::size_t i) {
+    return static_cast<double>(ctx.bonds.end(i) - ctx.bonds.begin(i));
+  }) <= kMaxColouredBonds;
+  std::vector<std::vector<std::size_t>> members;
+  if (byBonds) {
+    long count = 0;
+    const std::vector<long> colour = bondColours(ctx, count);
+    if (count * nd > kMaxProbes) {
       putBack();
       return {};
     }
-  std::vector<long> sub(n, 0);
-  long most = 0;
-  for (std::size_t b = 0; b < n;) {
-    std::size_t e = b;
-    while (e < n && ctx.cellOf(e) == ctx.cellOf(b)) ++e;
-    std::vector<std::pair<Gid, std::size_t>> ids;
-    for (std::size_t i = b; i < e; ++i) ids.push_back({P.gid(i), i});
-    std::sort(ids.begin(), ids.end());
-    for (std::size_t k = 0; k < ids.size(); ++k) sub[ids[k].second] = static_cast<long>(k);
-    most = std::max(most, static_cast<long>(ids.size()));
-    b = e;
-  }
-  most = static_cast<long>(ctx.max(static_cast<double>(most)));
-  long cells = 1;
-  for (int a = 0; a < dim; ++a) cells *= period;
-  const long colours = cells * most;
-  if (colours * nd > kMaxProbes) {
-    putBack();
-    return {};
-  }
-  std::vector<std::vector<std::size_t>> members(static_cast<std::size_t>(colours));
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto& g = ctx.globalCellOf(i);
-    long c = 0;
-    for (int a = dim - 1; a >= 0; --a) c = c * period + ((g[a] % period) + period) % period;
-    members[static_cast<std::size_t>(c * most + sub[i])].push_back(i);
+    members.resize(static_cast<std::size_t>(count));
+    for (std::size_t i = 0; i < n; ++i) members[static_cast<std::size_t>(colour[i])].push_back(i);
+  } else {
+    const int period = 2 * static_cast<int>(passes) * ctx.cellDivisions() + 1;
+    for (int a = 0; a < dim; ++a)
+      if (ctx.domain().periodic[a] && ctx.globalCells(a) % period != 0) {
+        putBack();
+        return {};
+      }
+    std::vector<long> sub(n, 0);
+    long most = 0;
+    for (std::size_t b = 0; b < n;) {
+      std::size_t e = b;
+      while (e < n && ctx.cellOf(e) == ctx.cellOf(b)) ++e;
+      std::vector<std::pair<Gid, std::size_t>> ids;
+      for (std::size_t i = b; i < e; ++i) ids.push_back({P.gid(i), i});
+      std::sort(ids.begin(), ids.end());
+      for (std::size_t k = 0; k < ids.size(); ++k) sub[ids[k].second] = static_cast<long>(k);
+      most = std::max(most, static_cast<long>(ids.size()));
+      b = e;
+    }
+    most = static_cast<long>(ctx.max(static_cast<double>(most)));
+    long cells = 1;
+    for (int a = 0; a < dim; ++a) cells *= period;
+    const long colours = cells * most;
+    if (colours * nd > kMaxProbes) {
+      putBack();
+      return {};
+    }
+    members.resize(static_cast<std::size_t>(colours));
+    for (std::size_t i = 0; i < n; ++i) {
+      const auto& g = ctx.globalCellOf(i);
+      long c = 0;
+      for (int a = dim - 1; a >= 0; --a) c = c * period + ((g[a] % period) + period) % period;
+      members[static_cast<std::size_t>(c * most + sub[i])].push_back(i);
+    }
   }
   // The entries: a probe's response at row i comes from the one particle it moved that is
-  // i or near i (one force pass: the model reaches no further than the nearby cells).
+  // i or near i: one of its bonds' partners, or in the nearby cells (one force pass: the
+  // model reaches no further).
   if (entries) {
     entries->clear();
     if (passes != 1) entries = nullptr;
@@ -224,7 +245,13 @@ std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function
   std::vector<std::vector<std::size_t>> nearby(entries ? n : 0);
   for (std::size_t i = 0; i < nearby.size(); ++i) {
     nearby[i].push_back(i);
-    ctx.forEachNearby(i, [&](std::size_t j) { nearby[i].push_back(j); });
+    if (byBonds) {
+      for (std::size_t b = ctx.bonds.begin(i); b < ctx.bonds.end(i); ++b)
+        if (ctx.bonds.partner(b) >= 0)
+          nearby[i].push_back(static_cast<std::size_t>(ctx.bonds.partner(b)));
+    } else {
+      ctx.forEachNearby(i, [&](std::size_t j) { nearby[i].push_back(j); });
+    }
   }
   std::vector<double> rows(n * nd, 0.0), u(nl * nd), f(n * nd), g(n * nd);
   long probes = 0;

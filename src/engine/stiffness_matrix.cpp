@@ -7,22 +7,14 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "engine/bytes.hpp"
 #include "engine/context.hpp"
 
 namespace pdq {
 
 namespace {
-template <class T>
-void append(std::vector<char>& out, const T* data, std::size_t n) {
-  const std::size_t at = out.size();
-  out.resize(at + n * sizeof(T));
-  if (n) std::memcpy(out.data() + at, data, n * sizeof(T));
-}
-template <class T>
-void take(const char*& in, T* data, std::size_t n) {
-  if (n) std::memcpy(data, in, n * sizeof(T));
-  in += n * sizeof(T);
-}
+using bytes::append;
+using bytes::take;
 
 // Eigen's LDLᵀ, which also tells the size of its factor once the pattern is analysed.
 struct Ldlt

@@ -34,6 +34,7 @@ class PeriModel : public Model {
   double horizon() const final { return delta_; }
   // Bonds are the only neighbours after setup.
   bool resultsDependOnCells() const final { return false; }
+  bool forcesFromBonds() const final { return true; }
   void setup(Context& ctx) final;
   void prepare(Context& ctx) final;
   Motion motion() const final;

@@ -38,6 +38,9 @@ class Spring final : public Model {
   // A spring lattice keeps its neighbours; `shuffle = true` lets particles migrate anyway
   // (bonds follow them by global ID), which the engine's tests use.
   bool shuffles() const override { return shuffle_; }
+  // Its force (5. below) reads the bonds' partners and nothing else: the quasi-static
+  // solver's probes may colour the bond graph.
+  bool forcesFromBonds() const override { return true; }
 
   // 4. Setup: bond every owned particle to every particle within the horizon in the
   //    reference configuration. forEachNearby visits owned and ghost particles alike, so

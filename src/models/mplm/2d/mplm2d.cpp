@@ -30,6 +30,7 @@ class Mplm2d final : public Model {
   void configure(const Params& p) override { par_.read(p); }
   Schema schema() const override { return mplm::schema(); }
   double horizon() const override { return par_.horizon(); }
+  bool forcesFromBonds() const override { return true; }  // its interactions are bonds
 
   // Interactions in the reference configuration: concrete–concrete within δ; steel–steel
   // of the same bar within s; a linking steel particle with concrete within s (not at

@@ -57,6 +57,7 @@ class Mplm3d final : public Model {
   }
   Schema schema() const override { return mplm3d::schema(); }
   double horizon() const override { return par_.horizon(); }
+  bool forcesFromBonds() const override { return true; }  // its interactions are bonds
 
   // Interactions in the reference configuration: concrete–concrete within δ (the 12 nearest
   // and 6 second-nearest neighbours at δ = 1.5 s); steel–steel of the same bar within s; a
