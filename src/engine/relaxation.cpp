@@ -50,7 +50,7 @@ constexpr int kPowerIterations = 100;
 // The finite-difference probe moves no DOF more than this fraction of the horizon (or rad).
 constexpr double kProbe = 1e-7;
 // Per-DOF fictitious masses need one probe per colour and DOF each way; beyond this many (3D
-// peridynamics), the masses are the model's scaled by ω_max² instead.
+// peridynamics coloured by cells), the masses are the model's scaled by ω_max² instead.
 constexpr long kMaxProbes = 5000;
 // The bond graph is coloured on rank 0 while it holds at most this many bonds (16 bytes
 // each in transit); a larger one takes the cells' colouring.
@@ -78,6 +78,47 @@ constexpr double kAssembledShift = 1e-12;
 // The assembled stiffness is used while its factor holds at most this many times the
 // matrix's own stored entries, so that a solve costs a few force evaluations at most.
 constexpr double kMaxFill = 16;
+
+// The particles of each colour (owned ones), coloured by engine cell: cells `period` apart
+// along some axis, so at least 2 × passes undivided cells (each at least a horizon) apart:
+// a row, which reaches a horizon per force pass, meets one of them at most (two at exactly
+// twice its reach apart would both be at the horizon's very edge); within a cell they
+// differ by their rank of global ID. None when over `maxColours`, or when a periodic axis's
+// cells are not a multiple of the period.
+std::vector<std::vector<std::size_t>> cellColours(Context& ctx, long passes, long maxColours) {
+  const Particles& P = ctx.particles;
+  const std::size_t n = P.owned();
+  const int dim = ctx.dim();
+  const int period = 2 * static_cast<int>(passes) * ctx.cellDivisions() + 1;
+  for (int a = 0; a < dim; ++a)
+    if (ctx.domain().periodic[a] && ctx.globalCells(a) % period != 0) return {};
+  std::vector<long> sub(n, 0);
+  long most = 0;
+  for (std::size_t b = 0; b < n;) {
+    std::size_t e = b;
+    while (e < n && ctx.cellOf(e) == ctx.cellOf(b)) ++e;
+    std::vector<std::pair<Gid, std::size_t>> ids;
+    for (std::size_t i = b; i < e; ++i) ids.push_back({P.gid(i), i});
+    std::sort(ids.begin(), ids.end());
+    for (std::size_t k = 0; k < ids.size(); ++k) sub[ids[k].second] = static_cast<long>(k);
+    most = std::max(most, static_cast<long>(ids.size()));
+    b = e;
+  }
+  most = static_cast<long>(ctx.max(static_cast<double>(most)));
+  long cells = 1;
+  for (int a = 0; a < dim; ++a) cells *= period;
+  const long colours = cells * most;
+  if (colours > maxColours) return {};
+  std::vector<std::vector<std::size_t>> members(static_cast<std::size_t>(colours));
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& g = ctx.globalCellOf(i);
+    long c = 0;
+    for (int a = dim - 1; a >= 0; --a) c = c * period + ((g[a] % period) + period) % period;
+    members[static_cast<std::size_t>(c * most + sub[i])].push_back(i);
+  }
+  return members;
+}
+
 }  // namespace
 
 long Integrator::iterationCap(const Solver& solver) const {
@@ -157,7 +198,7 @@ std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function
                                                std::vector<StiffnessEntry>* entries) {
   Particles& P = ctx.particles;
   const std::size_t n = P.owned(), nl = P.local();
-  const int nd = nT_ + nR_, dim = ctx.dim();
+  const int nd = nT_ + nR_;
   // Probed at the reference configuration with the bonds as they are: the stiffness of
   // the damaged lattice unloaded, which no damage grows under (a probe at a strained state
   // would meet interactions softening at the crack fronts), and which depends on nothing a
@@ -182,11 +223,7 @@ std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function
   long passes = 1;
   auto probe = stiffnessProbe(ctx, forces, &passes);
   // The colours, each probed at once: with a model whose forces come from its bonds alone
-  // (one force pass), a distance-2 colouring of the bond graph; otherwise particles of one
-  // colour lie in cells `period` apart along some axis, so at least 2 × passes undivided
-  // cells (each at least a horizon) apart: a row, which reaches a horizon per force pass,
-  // meets one of them at most (two at exactly twice its reach apart would both be at the
-  // horizon's very edge). Within a cell they differ by their rank of global ID.
+  // (one force pass), a distance-2 colouring of the bond graph; otherwise the cells'.
   const bool byBonds = model_.forcesFromBonds() && passes == 1 && ctx.sumOwned([&](std::size_t i) {
     return static_cast<double>(ctx.bonds.end(i) - ctx.bonds.begin(i));
   }) <= kMaxColouredBonds;
@@ -201,38 +238,10 @@ std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function
     members.resize(static_cast<std::size_t>(count));
     for (std::size_t i = 0; i < n; ++i) members[static_cast<std::size_t>(colour[i])].push_back(i);
   } else {
-    const int period = 2 * static_cast<int>(passes) * ctx.cellDivisions() + 1;
-    for (int a = 0; a < dim; ++a)
-      if (ctx.domain().periodic[a] && ctx.globalCells(a) % period != 0) {
-        putBack();
-        return {};
-      }
-    std::vector<long> sub(n, 0);
-    long most = 0;
-    for (std::size_t b = 0; b < n;) {
-      std::size_t e = b;
-      while (e < n && ctx.cellOf(e) == ctx.cellOf(b)) ++e;
-      std::vector<std::pair<Gid, std::size_t>> ids;
-      for (std::size_t i = b; i < e; ++i) ids.push_back({P.gid(i), i});
-      std::sort(ids.begin(), ids.end());
-      for (std::size_t k = 0; k < ids.size(); ++k) sub[ids[k].second] = static_cast<long>(k);
-      most = std::max(most, static_cast<long>(ids.size()));
-      b = e;
-    }
-    most = static_cast<long>(ctx.max(static_cast<double>(most)));
-    long cells = 1;
-    for (int a = 0; a < dim; ++a) cells *= period;
-    const long colours = cells * most;
-    if (colours * nd > kMaxProbes) {
+    members = cellColours(ctx, passes, kMaxProbes / nd);
+    if (members.empty()) {
       putBack();
       return {};
-    }
-    members.resize(static_cast<std::size_t>(colours));
-    for (std::size_t i = 0; i < n; ++i) {
-      const auto& g = ctx.globalCellOf(i);
-      long c = 0;
-      for (int a = dim - 1; a >= 0; --a) c = c * period + ((g[a] % period) + period) % period;
-      members[static_cast<std::size_t>(c * most + sub[i])].push_back(i);
     }
   }
   // The entries: a probe's response at row i comes from the one particle it moved that is
