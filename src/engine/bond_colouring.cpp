@@ -49,7 +49,7 @@ std::vector<long> bondColours(Context& ctx, long& count) {
     const unsigned long m = B.end(i) - B.begin(i);
     bytes::append(mine, &g, 1);
     bytes::append(mine, &m, 1);
-    bytes::append(mine, B.partnerGids(B.begin(i)), m);
+    if (m > 0) bytes::append(mine, B.partnerGids(B.begin(i)), m);
   }
   std::vector<std::size_t> starts;
   const std::vector<char> all = ctx.gather(mine, starts);
@@ -67,9 +67,10 @@ std::vector<long> bondColours(Context& ctx, long& count) {
     std::sort(rows.begin(), rows.end());
     std::vector<Gid> ids(rows.size());
     for (std::size_t k = 0; k < rows.size(); ++k) ids[k] = rows[k].first;
-    std::vector<std::size_t> start{0}, adj;
-    for (const auto& [g, at] : rows) {
-      const char* in = at;
+    // The edges both ways (a model may keep a bond on one side only), once each.
+    std::vector<std::pair<std::size_t, std::size_t>> edges;
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const char* in = rows[k].second;
       unsigned long m = 0;
       bytes::take(in, &m, 1);
       std::vector<Gid> partners(m);
@@ -78,10 +79,19 @@ std::vector<long> bondColours(Context& ctx, long& count) {
         const auto it = std::lower_bound(ids.begin(), ids.end(), p);
         if (it == ids.end() || *it != p)
           throw std::logic_error("bond colouring: a bond's partner is no particle");
-        adj.push_back(static_cast<std::size_t>(it - ids.begin()));
+        const auto j = static_cast<std::size_t>(it - ids.begin());
+        edges.push_back({k, j});
+        edges.push_back({j, k});
       }
-      start.push_back(adj.size());
     }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    std::vector<std::size_t> start(ids.size() + 1, 0), adj(edges.size());
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      ++start[edges[e].first + 1];
+      adj[e] = edges[e].second;
+    }
+    for (std::size_t k = 0; k < ids.size(); ++k) start[k + 1] += start[k];
     const std::vector<long> colour = greedy(start, adj, count);
     const unsigned long total = ids.size();
     bytes::append(reply, &count, 1);
