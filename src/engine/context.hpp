@@ -38,10 +38,12 @@ class Context {
   const Integrator& integrator() const { return *integrator_; }
   int dim() const { return cube_.decomposition().dim(); }
   const Domain& domain() const { return cube_.decomposition().domain(); }
-  // The smallest cell edge (of undivided cells): every pair closer than this is among a
-  // particle's nearby cells, and the engine shuffles before any particle moves more than
-  // (cellSize - horizon) / 2, so a pair list of this radius stays complete until then.
-  double cellSize() const { return cube_.decomposition().minActiveCellSize(); }
+  // The radius of a pair list that stays complete until the next shuffle: every pair
+  // closer than this is among a particle's nearby cells, and the engine shuffles before any
+  // particle moves more than (listRadius - horizon) / 2. It is the edge of the cells the
+  // model asks for (cells the engine widened, for a larger minimum cell size or a better
+  // balance, keep it), so lists hold the same pairs whatever the cells.
+  double listRadius() const { return listRadius_; }
 
   // Every particle j near owned particle i (same or adjacent cell, or up to the model's
   // cell divisions away), canonical order.
@@ -110,13 +112,14 @@ class Context {
   void setLoading(const Loading& l) { loading_ = l; }
   void setIntegrator(Integrator* i) { integrator_ = i; }
   void setStaticFactor(double f) { quasiStatic_ = true, staticFactor_ = f; }
+  void setListRadius(double r) { listRadius_ = r; }
 
  private:
   ProcCube& cube_;
   Comm& comm_;
   std::ostream& log_;
   long step_ = 0, steps_ = 0;
-  double dt_ = 0, stableDt_ = 0;
+  double dt_ = 0, stableDt_ = 0, listRadius_ = 0;
   Loading loading_;
   bool quasiStatic_ = false;
   double staticFactor_ = 0;

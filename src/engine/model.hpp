@@ -69,8 +69,9 @@ class Model {
   virtual bool bondsWithinHorizon() const { return true; }
   // True when results depend on the cell lattice (the model visits neighbours through the
   // cells after setup, in the cells' order). A model whose only neighbours are its bonds
-  // (sorted by partner ID) says false; the engine may then take fewer, larger cells to
-  // balance the ranks better.
+  // (sorted by partner ID), or whose sums do not depend on the order (exact sums, lj), says
+  // false; the engine may then take fewer, larger cells along axes cut among ranks to
+  // balance them better.
   virtual bool resultsDependOnCells() const { return true; }
   // True when the forces on a particle depend on nothing but its own state and its bonds'
   // partners', per force pass (no interaction with particles it is not bonded to): the

@@ -165,6 +165,15 @@ void Simulation::setup() {
   }
   dec_ = std::make_unique<Decomposition>(makeDomain(), minCell, cfg_.procs, comm_.size(),
                                          comm_.rank(), cfg_.source, model_->cellDivisions());
+  // Shuffle once some particle may have left the slack of its cells. A model that asks for
+  // a skin (cells wider than its horizon) gets the slack of the cells it asks for even in
+  // wider ones: shuffles wrap periodic positions, which changes the bits of later pair
+  // differences, so their rhythm must not depend on a larger minimum cell size, nor on the
+  // larger cells chosen below for balance.
+  const double own = model_->minCellSize(), cell = dec_->minActiveCellSize();
+  const double slackCell =
+      own > horizon ? std::min(cell, Decomposition::minActiveCellSize(dec_->domain(), own)) : cell;
+  slack_ = (slackCell - horizon) / 2;
   {
     // Cores of equal particle counts rather than equal cell counts (every rank holds every
     // particle here, so all find the same cells and cuts).
@@ -178,24 +187,17 @@ void Simulation::setup() {
       }
       return w;
     };
-    if (!model_->shuffles() && !model_->resultsDependOnCells()) dec_->chooseCells(layers);
+    if (!model_->resultsDependOnCells()) dec_->chooseCells(layers);
     std::array<std::vector<double>, 3> weights;
     for (int a = 0; a < dec_->dim(); ++a) weights[a] = layers(a, dec_->globalCells(a));
     dec_->balance(weights);
   }
-  // Shuffle once some particle may have left the slack of its cells. A model that asks for
-  // a skin (cells wider than its horizon) gets the slack of the cells it asks for even in
-  // wider ones: shuffles wrap periodic positions, which changes the bits of later pair
-  // differences, so their rhythm must not depend on a larger minimum cell size.
-  const double own = model_->minCellSize(), cell = dec_->minActiveCellSize();
-  const double slackCell =
-      own > horizon ? std::min(cell, Decomposition::minActiveCellSize(dec_->domain(), own)) : cell;
-  slack_ = (slackCell - horizon) / 2;
   cube_ = std::make_unique<ProcCube>(*dec_, comm_, particles_, bonds_, model_->shuffles());
   cube_->distribute(initial_.gid, initial_.fixed, initial_.alter);
   initial_ = ParticleSet{};  // the global tables are no longer needed
   cube_->rebuild(cfg_.firstStep);
   ctx_ = std::make_unique<Context>(particles_, bonds_, *cube_, comm_, debug_);
+  ctx_->setListRadius(slackCell);
   integrator_ = std::make_unique<Integrator>(*model_);
   {
     const Motion m = model_->motion();
