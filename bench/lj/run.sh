@@ -6,12 +6,14 @@
 # over the time loop alone (LAMMPS's "Loop time"); ratio = pdq / LAMMPS.
 #
 #   bench/lj/run.sh BUILD_DIR [RANKS...]        (default ranks: 1 2)
-# Environment: LMP (default /usr/bin/lmp), LJ_STEPS_SMALL (200), LJ_STEPS_LARGE (100).
+# Environment: LMP (default /usr/bin/lmp), LJ_STEPS_SMALL (200), LJ_STEPS_LARGE (100),
+# LJ_ROUNDS (3: pdq and lj/cut/opt run alternately this many times, medians kept; lj/cut once).
 set -euo pipefail
 
 build=$(cd "${1:?usage: run.sh BUILD_DIR [RANKS...]}" && pwd)
 shift
 ranks=("$@")
+rounds=${LJ_ROUNDS:-3}
 [ ${#ranks[@]} -eq 0 ] && ranks=(1 2)
 bench=$build/bench/lj/lj_bench
 lmp=${LMP:-/usr/bin/lmp}
@@ -48,6 +50,11 @@ run $2
 IN
 }
 
+# The median of its arguments (numbers).
+median() {
+  printf '%s\n' "$@" | sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
+}
+
 # particle-steps per second from a LAMMPS log ("Loop time of T on P procs for N steps with M atoms")
 lammps_rate() {
   awk '/^Loop time of/ { printf "%.4e\n", $12 * $9 / $4 }' "$1"
@@ -67,6 +74,7 @@ lammps_cpu_sum() {
 out=$build/bench/lj/throughput.txt
 {
   echo "# LJ throughput, particle-steps/s (wall clock, time loop only); $(date -u +%Y-%m-%dT%H:%MZ) on $(nproc --all) cores, load average $(cut -d' ' -f1-3 /proc/loadavg)"
+  echo "# pdq and lj/cut/opt: medians of $rounds rounds run alternately (each round in the lines below); lj/cut: one run"
   echo "# cpu: the same over the busiest pdq rank's CPU time, and over LAMMPS's CPU use of lj/cut/opt"
   printf "%-8s %-5s %-6s %12s %12s %12s %10s %10s %12s %12s %8s\n" atoms ranks steps pdq lammps \
     lammps-opt pdq/lmp pdq/opt pdq_cpu opt_cpu cpu/opt
@@ -76,17 +84,26 @@ for cells in 20 40; do
   steps=$([ "$cells" -eq 20 ] && echo "${LJ_STEPS_SMALL:-200}" || echo "${LJ_STEPS_LARGE:-100}")
   lammps_input "$cells" "$steps" > "$work/in.lj"
   for np in "${ranks[@]}"; do
-    line=$("${mpirun[@]}" -np "$np" "$bench" "$cells" "$steps")
-    pdq=$(sed -n 's/.*particle_steps_per_s=\([^ ]*\).*/\1/p' <<<"$line")
-    pdq_cpu=$(sed -n 's/.*cpu_seconds=\([^ ]*\).*/\1/p' <<<"$line")
-    pdq_sum=$(sed -n 's/.*cpu_sum=\([^ ]*\).*/\1/p' <<<"$line")
-    grep '^  rank=' <<<"$line" | sed "s/^/# $atoms atoms: /" >>"$work/ranks.txt"
+    # pdq and lj/cut/opt alternately, ROUNDS times: the host moves a core's speed by tens
+    # of per cent from minute to minute, so each code's median over the rounds is kept.
+    pdq_r=() cpu_r=() sum_r=() opt_r=() optc_r=() opts_r=()
+    for ((round = 0; round < rounds; ++round)); do
+      line=$("${mpirun[@]}" -np "$np" "$bench" "$cells" "$steps")
+      pdq_r+=("$(sed -n 's/.*particle_steps_per_s=\([^ ]*\).*/\1/p' <<<"$line")")
+      cpu_r+=("$(sed -n 's/.*cpu_seconds=\([^ ]*\).*/\1/p' <<<"$line")")
+      sum_r+=("$(sed -n 's/.*cpu_sum=\([^ ]*\).*/\1/p' <<<"$line")")
+      grep '^  rank=' <<<"$line" | sed "s/^/# $atoms atoms, round $((round + 1)): /" >>"$work/ranks.txt"
+      "${mpirun[@]}" -np "$np" "$lmp" -sf opt -in "$work/in.lj" -log "$work/opt.log" -screen none
+      opt_r+=("$(lammps_rate "$work/opt.log")")
+      optc_r+=("$(lammps_cpu_rate "$work/opt.log")")
+      opts_r+=("$(lammps_cpu_sum "$work/opt.log" "$np")")
+    done
+    pdq=$(median "${pdq_r[@]}") pdq_cpu=$(median "${cpu_r[@]}") pdq_sum=$(median "${sum_r[@]}")
+    opt=$(median "${opt_r[@]}") opt_cpu=$(median "${optc_r[@]}")
+    echo "# $atoms atoms, $np rank(s), each round: pdq ${pdq_r[*]}, lj/cut/opt ${opt_r[*]}" >>"$work/rounds.txt"
     "${mpirun[@]}" -np "$np" "$lmp" -in "$work/in.lj" -log "$work/plain.log" -screen none
-    "${mpirun[@]}" -np "$np" "$lmp" -sf opt -in "$work/in.lj" -log "$work/opt.log" -screen none
     plain=$(lammps_rate "$work/plain.log")
-    opt=$(lammps_rate "$work/opt.log")
-    opt_cpu=$(lammps_cpu_rate "$work/opt.log")
-    echo "$atoms $np $pdq_sum $(lammps_cpu_sum "$work/opt.log" "$np")" >>"$work/sums.txt"
+    echo "$atoms $np $pdq_sum $(median "${opts_r[@]}")" >>"$work/sums.txt"
     awk -v a="$atoms" -v n="$np" -v s="$steps" -v p="$pdq" -v l="$plain" -v o="$opt" -v c="$pdq_cpu" \
       -v oc="$opt_cpu" 'BEGIN { pc = a * s / c; printf "%-8s %-5s %-6s %12.4e %12.4e %12.4e %10.3f %10.3f %12.4e %12.4e %8.3f\n", a, n, s, p, l, o, p / l, p / o, pc, oc, pc / oc }' |
       tee -a "$out.tmp"
@@ -103,7 +120,7 @@ awk '{ k = $1; if ($2 == 1) { p1[k] = $3; o1[k] = $4 } if ($2 == 2) { p2[k] = $3
      END { for (k in p1) if (k in p2)
        printf "# %s atoms, 1 -> 2 ranks efficiency (CPU time, all ranks): pdq %.0f %% (goal >= 90 %%), lj/cut/opt %.0f %%\n",
          k, 100 * p1[k] / p2[k], 100 * o1[k] / o2[k] }' "$work/sums.txt" | sort -n -k2 | tee -a "$out.tmp"
-cat "$work/ranks.txt" | tee -a "$out.tmp"
+cat "$work/rounds.txt" "$work/ranks.txt" | tee -a "$out.tmp"
 echo "# load average $(cut -d' ' -f1-3 /proc/loadavg)" | tee -a "$out.tmp"
 mv "$out.tmp" "$out"
 echo "# written to $out"

@@ -51,6 +51,12 @@ class Context {
   void forEachNearby(std::size_t i, F&& f) const {
     cube_.forEachNearby(i, std::forward<F>(f));
   }
+  // The same particles, the cells in memory order: nearby owned particles come in index
+  // order, but the order depends on the processor grid (for order-independent sums).
+  template <class F>
+  void forEachNearbyInMemoryOrder(std::size_t i, F&& f) const {
+    cube_.forEachNearbyInMemoryOrder(i, std::forward<F>(f));
+  }
   // The cell of particle i. Owned particles are sorted by cell: consecutive owned
   // particles with the same cell have the same nearby particles (but for themselves).
   int cellOf(std::size_t i) const { return cube_.cellOf(i); }

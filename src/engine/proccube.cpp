@@ -53,9 +53,8 @@ ProcCube::ProcCube(const Decomposition& dec, Comm& comm, Particles& particles, B
     for (int dy = -skin_[1]; dy <= skin_[1]; ++dy)
       for (int dx = -skin_[0]; dx <= skin_[0]; ++dx)
         stencil_.push_back(dz * stride_[2] + dy * stride_[1] + dx * stride_[0]);
-  // Visited in memory order, whichever axis is slowest: nearby owned particles then come in
-  // index order (owned particles are sorted by cell).
-  std::sort(stencil_.begin(), stencil_.end());
+  memoryStencil_ = stencil_;
+  std::sort(memoryStencil_.begin(), memoryStencil_.end());
 }
 
 const double* ProcCube::binPosition(std::size_t i) const {

@@ -60,7 +60,6 @@ class ProcCube {
   // Bonds: map each bond's partner global ID to a local index (nearest copy if several).
   void remapBonds(long step);
 
-  // Largest displacement of an owned particle since the last rebuild (this rank).
   // The largest distance an owned particle moved since the last rebuild (and which one).
   double maxDisplacementSinceRebuild(std::size_t* which = nullptr) const;
 
@@ -69,14 +68,15 @@ class ProcCube {
   // canonical order: cells by (dz, dy, dx), particles in a cell by global ID.
   template <class F>
   void forEachNearby(std::size_t i, F&& f) const {
-    const int c = cell_[i];
-    for (int o : stencil_) {
-      const int cc = c + o;
-      for (std::uint32_t k = cellStart_[cc]; k < cellStart_[cc + 1]; ++k) {
-        const std::uint32_t j = cellList_[k];
-        if (j != i) f(j);
-      }
-    }
+    visit(stencil_, i, f);
+  }
+  // The same particles with the cells in memory order, so that nearby owned particles come
+  // in index order (owned particles are sorted by cell). Which cell comes first depends on
+  // the cells' layout, hence on the processor grid: for models whose sums do not depend on
+  // the order (LJ's exact sums).
+  template <class F>
+  void forEachNearbyInMemoryOrder(std::size_t i, F&& f) const {
+    visit(memoryStencil_, i, f);
   }
 
   // The local cell of particle i (owned particles are sorted by cell, so owned particles
@@ -110,7 +110,20 @@ class ProcCube {
   bool byCurrent_;
   std::array<int, 3> ext_{}, skin_{};      // local cell extents (core + skin), skin depth
   std::array<int, 3> stride_{};            // a cell's index = Σ local cell coordinate × stride
-  std::vector<int> stencil_;               // linear offsets of the neighbour cells
+  std::vector<int> stencil_;               // linear offsets of the neighbour cells, canonical
+  std::vector<int> memoryStencil_;         // the same, ascending
+
+  template <class F>
+  void visit(const std::vector<int>& stencil, std::size_t i, F& f) const {
+    const int c = cell_[i];
+    for (int o : stencil) {
+      const int cc = c + o;
+      for (std::uint32_t k = cellStart_[cc]; k < cellStart_[cc + 1]; ++k) {
+        const std::uint32_t j = cellList_[k];
+        if (j != i) f(j);
+      }
+    }
+  }
   std::vector<std::int32_t> cell_;         // local cell of each local particle
   std::vector<std::array<int, 3>> gcell_;  // global cell of each local particle (unwrapped)
   std::vector<std::uint32_t> cellStart_, cellList_;

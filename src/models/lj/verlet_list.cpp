@@ -47,10 +47,10 @@ void VerletList::build(const Context& ctx, const double* pos, std::size_t stride
       if (i == lo || ctx.cellOf(i) != ctx.cellOf(i - 1)) {
         s.near.clear();
         s.ghost.clear();
-        ctx.forEachNearby(i, [&](std::size_t j) {
+        ctx.forEachNearbyInMemoryOrder(i, [&](std::size_t j) {
           (j < n ? s.near : s.ghost).push_back(static_cast<std::uint32_t>(j));
         });
-        // Owned particles are sorted by cell and the cells visited in that order, so the
+        // Owned particles are sorted by cell and the cells visited in memory order, so the
         // owned candidates come sorted by index; sort them only if not.
         if (!std::is_sorted(s.near.begin(), s.near.end())) std::sort(s.near.begin(), s.near.end());
         s.owned = s.near.size();
