@@ -260,6 +260,19 @@ void Integrator::ensureBodies(Context& ctx) {
       if (rotation_ == Rotation::Spatial && b.constraint[d] == Constraint::Resting)
         throw std::logic_error("a spatial rotation cannot rest on a support");
   haveBodies_ = true;
+  indexFreeBodies();
+}
+
+void Integrator::indexFreeBodies() {
+  const std::size_t n = bodies_.size();
+  freeInverseMass_.assign(n, 0.0);
+  if (rotation_ != Rotation::None) return;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Body& b = bodies_[i];
+    bool free = true;
+    for (int d = 0; d < nT_; ++d) free &= b.constraint[d] == Constraint::Free && b.load[d] == 0;
+    if (free) freeInverseMass_[i] = 1 / b.mass;
+  }
 }
 
 void Integrator::turn(Particles& P, std::size_t i, const double phi[3]) const {
@@ -321,6 +334,7 @@ void Integrator::step(Context& ctx) {
   const bool held = L.held(tNow);
   if (held && L.holdDampingRatio > 0 && holdDamping_ < 0) holdDamping_ = rayleighDamping(ctx, fNow);
   const double c = damping_ + (held && holdDamping_ > 0 ? holdDamping_ : 0.0);
+  const double zero = 0.0 * fNow;  // an unloaded DOF's load term, signed as advance's
   Watch* const w = watch_;
   watch_ = nullptr;
 #pragma omp parallel
@@ -333,7 +347,11 @@ void Integrator::step(Context& ctx) {
       const std::size_t begin = static_cast<std::size_t>(k) * kBlock;
       const std::size_t end = std::min(n, begin + kBlock);
       if (!w) {
-        for (std::size_t i = begin; i < end; ++i) advance<false>(P, i, h, kick, fNow, fNext, c);
+        for (std::size_t i = begin; i < end; ++i)
+          if (freeInverseMass_[i] > 0)
+            advanceFree(P, i, h, kick, zero, c);
+          else
+            advance<false>(P, i, h, kick, fNow, fNext, c);
         continue;
       }
       double moves[kBlock], most = 0;
@@ -404,6 +422,23 @@ template <bool kMove>
   }
   turn(P, i, phi.data());
   return moved;
+}
+
+[[gnu::always_inline]] inline void Integrator::advanceFree(Particles& P, std::size_t i, double h,
+                                                           double kick, double zero,
+                                                           double c) const {
+  double* a = P.alter(i);
+  const double* F = P.integ(i);
+  const double invM = freeInverseMass_[i];
+  for (int d = 0; d < nT_; ++d) {
+    const int p = pos_[d], v = vel_[d];
+    // advance's (F + load fNow) / m, or F / m + load fNow / m, with load = 0: zero / m is
+    // zero itself (m > 0).
+    double acc = perMass_ ? F[frc_[d]] + zero : (F[frc_[d]] + zero) * invM;
+    acc -= c * a[v];
+    a[v] += acc * kick;
+    a[p] += a[v] * h;
+  }
 }
 
 bool Integrator::notFinite(const Particles& P, std::size_t i) const {

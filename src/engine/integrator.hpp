@@ -257,6 +257,12 @@ class Integrator {
   template <bool kMove>
   double advance(Particles& P, std::size_t i, double h, double kick, double fNow, double fNext,
                  double c) const;
+  // The same for a particle of freeInverseMass_ (free, unloaded, no rotation); zero is
+  // 0 × fNow, the unloaded force's term, so that the bits are advance's.
+  void advanceFree(Particles& P, std::size_t i, double h, double kick, double zero,
+                   double c) const;
+  // Fills freeInverseMass_ from bodies_.
+  void indexFreeBodies();
   // The square of owned particle i's move v Δt.
   double moveSquared(const Particles& P, std::size_t i, double h) const;
   // Adds owned particles [begin, end), just moved by a step of h, to `w` (one thread's
@@ -273,6 +279,9 @@ class Integrator {
   std::array<int, 6> pos_{}, vel_{}, frc_{};  // per DOF (a planar angle is a position)
   std::array<int, 4> quat_{};                 // orientation columns
   std::vector<Body> bodies_;
+  // Per owned particle, 1 / mass when every DOF is free and unloaded and there are no
+  // rotations (the step then reads 8 bytes of it, not its whole Body), else 0.
+  std::vector<double> freeInverseMass_;
   Watch* watch_ = nullptr;
   // Whether any of n values is not finite: a vectorised sweep (AVX2 when the CPU has it).
   bool (*anyNotFinite_)(const double*, std::size_t) = nullptr;

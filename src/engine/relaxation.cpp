@@ -337,6 +337,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     }
     if (ctx.sumOwned([&](std::size_t i) { return controlled[i] ? 1.0 : 0.0; }) == 0)
       throw InputError(source, control.line, "the displacement control moves no particle");
+    indexFreeBodies();
   }
   // The fictitious velocities are the solver's own: the model's stay zero, so no
   // velocity-dependent force (damping) acts on the static state.
