@@ -349,14 +349,15 @@ void Integrator::step(Context& ctx) {
       if (!w) {
         for (std::size_t i = begin; i < end; ++i)
           if (freeInverseMass_[i] > 0)
-            advanceFree(P, i, h, kick, zero, c);
+            advanceFree<false>(P, i, h, kick, zero, c);
           else
             advance<false>(P, i, h, kick, fNow, fNext, c);
         continue;
       }
       double moves[kBlock], most = 0;
       for (std::size_t i = begin; i < end; ++i) {
-        moves[i - begin] = advance<true>(P, i, h, kick, fNow, fNext, c);
+        moves[i - begin] = freeInverseMass_[i] > 0 ? advanceFree<true>(P, i, h, kick, zero, c)
+                                                   : advance<true>(P, i, h, kick, fNow, fNext, c);
         most = std::max(most, moves[i - begin]);
       }
       seeBlock(P, begin, end, moves, most, h, mine);
@@ -424,12 +425,14 @@ template <bool kMove>
   return moved;
 }
 
-[[gnu::always_inline]] inline void Integrator::advanceFree(Particles& P, std::size_t i, double h,
-                                                           double kick, double zero,
-                                                           double c) const {
+template <bool kMove>
+[[gnu::always_inline]] inline double Integrator::advanceFree(Particles& P, std::size_t i, double h,
+                                                             double kick, double zero,
+                                                             double c) const {
   double* a = P.alter(i);
   const double* F = P.integ(i);
   const double invM = freeInverseMass_[i];
+  double moved = 0;
   for (int d = 0; d < nT_; ++d) {
     const int p = pos_[d], v = vel_[d];
     // advance's (F + load fNow) / m, or F / m + load fNow / m, with load = 0: zero / m is
@@ -438,7 +441,12 @@ template <bool kMove>
     acc -= c * a[v];
     a[v] += acc * kick;
     a[p] += a[v] * h;
+    if (kMove) {
+      const double s = a[v] * h;
+      moved += s * s;
+    }
   }
+  return moved;
 }
 
 bool Integrator::notFinite(const Particles& P, std::size_t i) const {

@@ -259,8 +259,9 @@ class Integrator {
                  double c) const;
   // The same for a particle of freeInverseMass_ (free, unloaded, no rotation); zero is
   // 0 × fNow, the unloaded force's term, so that the bits are advance's.
-  void advanceFree(Particles& P, std::size_t i, double h, double kick, double zero,
-                   double c) const;
+  template <bool kMove>
+  double advanceFree(Particles& P, std::size_t i, double h, double kick, double zero,
+                     double c) const;
   // Fills freeInverseMass_ from bodies_.
   void indexFreeBodies();
   // The square of owned particle i's move v Δt.
