@@ -102,17 +102,7 @@ class ProcCube {
   void migrate(long step);
   const double* binPosition(std::size_t i) const;
   static double* buffer(std::vector<double>& b, std::size_t n);  // at least n values
-
-  const Decomposition& dec_;
-  Comm& comm_;
-  Particles& p_;
-  Bonds& bonds_;
-  bool byCurrent_;
-  std::array<int, 3> ext_{}, skin_{};      // local cell extents (core + skin), skin depth
-  std::array<int, 3> stride_{};            // a cell's index = Σ local cell coordinate × stride
-  std::vector<int> stencil_;               // linear offsets of the neighbour cells, canonical
-  std::vector<int> memoryStencil_;         // the same, ascending
-
+  // Calls f(j) for every particle j != i in the cells at `stencil`'s offsets from i's.
   template <class F>
   void visit(const std::vector<int>& stencil, std::size_t i, F& f) const {
     const int c = cell_[i];
@@ -124,6 +114,16 @@ class ProcCube {
       }
     }
   }
+
+  const Decomposition& dec_;
+  Comm& comm_;
+  Particles& p_;
+  Bonds& bonds_;
+  bool byCurrent_;
+  std::array<int, 3> ext_{}, skin_{};      // local cell extents (core + skin), skin depth
+  std::array<int, 3> stride_{};            // a cell's index = Σ local cell coordinate × stride
+  std::vector<int> stencil_;               // linear offsets of the neighbour cells, canonical
+  std::vector<int> memoryStencil_;         // the same, ascending
   std::vector<std::int32_t> cell_;         // local cell of each local particle
   std::vector<std::array<int, 3>> gcell_;  // global cell of each local particle (unwrapped)
   std::vector<std::uint32_t> cellStart_, cellList_;

@@ -55,8 +55,8 @@ TEST(LjCellSize, SameBitsInWiderCells) {
   EXPECT_EQ(wide.listRadius, ref.listRadius);    // lists of the cells the model asks for
   EXPECT_GT(ref.shuffles, 5u);
   ASSERT_GT(ref.state.size(), 1372u);
-  EXPECT_TRUE(sameBits(wide, ref)) << "cells of " << wide.cellSize << " end in other bits than cells of "
-                                   << ref.cellSize;
+  EXPECT_TRUE(sameBits(wide, ref))
+      << "cells of " << wide.cellSize << " end in other bits than cells of " << ref.cellSize;
 }
 
 // 2916 atoms in a box of 15.1 make 5 cells of 3.02 per axis; 2 ranks would own 2 | 3 of them
