@@ -55,6 +55,7 @@ class Bonds {
   };
   void save(Saved& s) const { s.attr = attr_, s.dead = dead_; }
   void restore(const Saved& s) { attr_ = s.attr, dead_ = s.dead; }
+  bool same(const Saved& s) const { return attr_ == s.attr && dead_ == s.dead; }
   std::vector<std::int32_t>& partners() { return partner_; }
 
  private:

@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/bonds.hpp"
 #include "engine/params.hpp"
 #include "engine/schema.hpp"
 #include "engine/stiffness_matrix.hpp"
@@ -292,11 +293,11 @@ class Integrator {
   // Gershgorin bound to its mass), and μ, ω_max² of G⁻¹K with G the Gershgorin masses
   // (0: the masses are the model's); and the iterations done so far.
   double omega2_ = -1, mu_ = 0;
-  std::vector<double> rows_;  // the Gershgorin rows and the load factor of the equilibrium
-  double rowsAt_ = -1;        // they were probed at
+  std::vector<double> rows_;  // the Gershgorin rows and the interactions' state they were
+  Bonds::Saved rowsBonds_;    // probed with
   // The assembled stiffness (Masses::Assembled, chosen at the first load step and saved in
-  // restart files), factorised with the rows; null when it is not positive definite.
-  bool assembled_ = false;
+  // restart files), factorised with the rows unless it is not positive definite.
+  bool assembled_ = false, factorised_ = false;
   std::shared_ptr<StiffnessMatrix> matrix_;
   double iterations_ = 0;
   LoadPath path_;

@@ -376,12 +376,15 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   bool probed = false;
   std::vector<StiffnessEntry> entries;
   if (first ? solver.masses != Solver::Masses::Model : mu_ > 0) {
-    // A try after a cut-back starts from the same equilibrium: its rows are at hand.
-    if (first || rowsAt_ != previous || rows_.size() != n * nd) {
+    // The rows (and the assembled stiffness) are probed at the reference configuration
+    // with the interactions' state as it is, so they are at hand while that state is the
+    // one they were probed with: a try after a cut-back, or load steps that damaged nothing.
+    const bool same = !first && rows_.size() == n * nd && !ctx.any(!ctx.bonds.same(rowsBonds_));
+    if (!same) {
       rows_ = gershgorinRows(ctx, forces, assembled_ ? &entries : nullptr);
+      ctx.bonds.save(rowsBonds_);
       probed = true;
     }
-    rowsAt_ = previous;
     if (rows_.empty() && !first)
       throw std::logic_error("quasi-static: the Gershgorin probes are no longer possible");
   }
@@ -499,24 +502,25 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   // The assembled stiffness, factorised with the rows it was probed with; a load step whose
   // matrix is not positive definite (a mechanism) relaxes with the diagonal masses.
   if (assembled_ && probed) {
-    matrix_.reset();
+    factorised_ = false;
     const bool any = ctx.any(!entries.empty());
-    auto m = std::make_shared<StiffnessMatrix>();
+    if (!matrix_) matrix_ = std::make_shared<StiffnessMatrix>();
+    StiffnessMatrix& m = *matrix_;
     StiffnessMatrix::Outcome outcome = StiffnessMatrix::Outcome::TooLarge;
     if (any) {
       std::vector<Gid> gids(n);
       for (std::size_t i = 0; i < n; ++i) gids[i] = P.gid(i);
-      outcome = m->factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxFill);
+      outcome = m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxFill);
       if (ctx.root())
-        ctx.log() << "quasi-static: assembled stiffness, " << m->unknowns() << " unknowns, "
-                  << m->matrixNonzeros() << " stored entries, " << m->factorNonzeros()
+        ctx.log() << "quasi-static: assembled stiffness, " << m.unknowns() << " unknowns, "
+                  << m.matrixNonzeros() << " stored entries, " << m.factorNonzeros()
                   << " in its factor"
                   << (outcome == StiffnessMatrix::Outcome::NotDefinite
                           ? ", not positive definite: this load step relaxes with the diagonal "
                             "masses\n"
                           : "\n");
     }
-    if (outcome == StiffnessMatrix::Outcome::Factorised) matrix_ = std::move(m);
+    factorised_ = outcome == StiffnessMatrix::Outcome::Factorised;
     if (first && outcome == StiffnessMatrix::Outcome::TooLarge) {
       assembled_ = false;
       ctx.warn(any ? "quasi-static: masses = \"assembled\": the stiffness's factor would fill "
@@ -526,7 +530,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
                      "masses are used");
     }
   }
-  const bool newton = assembled_ && matrix_;
+  const bool newton = assembled_ && factorised_;
   std::vector<double> step(newton ? n * nd : 0);
   auto weight = [&](std::size_t i, int d) { return 1 / dofMass(i, d); };
   auto onSupport = [&](std::size_t i, int d) {

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
-#include <tuple>
 
 #include "engine/bytes.hpp"
 #include "engine/context.hpp"
@@ -33,6 +32,8 @@ struct StiffnessMatrix::Factor {
   std::vector<long> out;  // per gathered DOF: where it stands in the solution sent back
   std::size_t total = 0;  // gathered DOFs
   long unknowns = 0, entries = 0, fill = 0;  // K̂'s stored entries, its factor's
+  bool analysed = false;                     // the ordering of the pattern below is in ldlt
+  std::vector<int> outer, inner;             // K̂'s pattern (compressed columns)
 };
 
 StiffnessMatrix::StiffnessMatrix() = default;
@@ -63,7 +64,7 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
 
   std::vector<char> reply;  // rank 0: whether K̂ is positive definite, then the sorted IDs
   if (ctx.root()) {
-    factor_ = std::make_unique<Factor>();
+    if (!factor_) factor_ = std::make_unique<Factor>();
     Factor& F = *factor_;
     std::vector<Gid> all;
     std::vector<unsigned char> isFree;
@@ -94,16 +95,33 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
         if (isFree[k]) F.row[k] = unknowns++;
       }
     F.unknowns = unknowns;
+    // A particle's place among the gathered ones: a table by ID where the IDs are dense
+    // enough, else a search of the sorted IDs.
+    const Gid top = order.empty() ? 0 : order.back().first;
+    std::vector<long> place;
+    if (!order.empty() && order.front().first >= 0 &&
+        top < 8 * static_cast<Gid>(order.size()) + 64) {
+      place.assign(static_cast<std::size_t>(top) + 1, -1);
+      for (const auto& [g, q] : order) place[static_cast<std::size_t>(g)] = static_cast<long>(q);
+    }
     auto unknown = [&](Gid g, int d) -> long {
+      if (!place.empty()) {
+        if (g < 0 || g > top) return -1;
+        const long q = place[static_cast<std::size_t>(g)];
+        return q < 0 ? -1 : F.row[static_cast<std::size_t>(q) * dofs + d];
+      }
       auto it = std::lower_bound(order.begin(), order.end(), std::pair<Gid, std::size_t>{g, 0});
       if (it == order.end() || it->first != g) return -1;
       return F.row[it->second * dofs + d];
     };
-    // K̂ = (K + Kᵀ)/2: each entry's half at (i, j) and (j, i); sorted (values included) so
-    // that duplicates add up in the same order whatever the ranks' order was.
-    std::vector<std::tuple<long, long, double>> t;
-    std::vector<unsigned char> hasRow(unknowns, 0);
+    // K̂ = (K + Kᵀ)/2, its lower half: an entry K_ij off the diagonal gives its half at
+    // (max, min), where K_ji's half joins it; two terms add up to the same bits in either
+    // order, so the ranks' order does not matter. A diagonal entry is whole, and the shift
+    // (or the fallback of an empty row) comes after it.
+    std::vector<Eigen::Triplet<double>> triplets;
     const std::size_t nEntries = gathered.size() / sizeof(Entry);
+    triplets.reserve(nEntries + static_cast<std::size_t>(unknowns));
+    std::vector<unsigned char> hasRow(unknowns, 0);
     const char* in = gathered.data();
     for (std::size_t e = 0; e < nEntries; ++e) {
       Entry x;
@@ -111,27 +129,31 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
       const long i = unknown(x.row, x.rowDof), j = unknown(x.col, x.colDof);
       if (i < 0 || j < 0) continue;
       hasRow[i] = 1;
-      t.emplace_back(i, j, x.value / 2);
-      t.emplace_back(j, i, x.value / 2);
+      triplets.emplace_back(static_cast<int>(std::max(i, j)), static_cast<int>(std::min(i, j)),
+                            i == j ? x.value : x.value / 2);
     }
     for (std::size_t k = 0; k < F.total; ++k) {
-      const long i = F.row[k];
+      const int i = static_cast<int>(F.row[k]);
       if (i < 0) continue;
       if (!hasRow[i])
-        t.emplace_back(i, i, diag[k]);
+        triplets.emplace_back(i, i, diag[k]);
       else if (shift > 0)
-        t.emplace_back(i, i, shift * diag[k]);
+        triplets.emplace_back(i, i, shift * diag[k]);
     }
-    std::sort(t.begin(), t.end());
-    std::vector<Eigen::Triplet<double>> triplets;
-    triplets.reserve(t.size());
-    for (const auto& [i, j, v] : t)
-      if (i >= j) triplets.emplace_back(static_cast<int>(i), static_cast<int>(j), v);
     Eigen::SparseMatrix<double> K(unknowns, unknowns);
     K.setFromTriplets(triplets.begin(), triplets.end());
-    F.ldlt.analyzePattern(K);
+    // The ordering and the factor's structure depend on K̂'s pattern alone: kept while it
+    // stays the same (the interactions that break only change values until one is lost).
+    const std::span<const int> outer(K.outerIndexPtr(), static_cast<std::size_t>(unknowns) + 1),
+        inner(K.innerIndexPtr(), static_cast<std::size_t>(K.nonZeros()));
+    if (!F.analysed || !std::ranges::equal(outer, F.outer) || !std::ranges::equal(inner, F.inner)) {
+      F.ldlt.analyzePattern(K);
+      F.outer.assign(outer.begin(), outer.end());
+      F.inner.assign(inner.begin(), inner.end());
+      F.fill = F.ldlt.predictedNonzeros();
+      F.analysed = true;
+    }
     F.entries = K.nonZeros();
-    F.fill = F.ldlt.predictedNonzeros();
     Outcome outcome = Outcome::TooLarge;
     if (static_cast<double>(F.fill) <= maxFill * static_cast<double>(F.entries)) {
       F.ldlt.factorize(K);

@@ -1,12 +1,15 @@
 // The quasi-static solver gives the same bits on 1, 2 and 3 ranks, on 1 and 2 threads, and
 // when restarted from a load step's restart file: a reinforced beam cracked in four load
-// steps.
+// steps. Its first two load steps damage nothing, so the third reuses the stiffness probed
+// at the first, where the run restarted at load step 2 probes it afresh.
 #include <gtest/gtest.h>
 #include <mpi.h>
 #include <omp.h>
 
 #include <algorithm>
+#include <fstream>
 #include <optional>
+#include <string>
 
 #include "harness.hpp"
 #include "io/restart.hpp"
@@ -67,6 +70,13 @@ void expectSameBits(Solver::Masses masses, const std::string& tag) {
   for (std::size_t k = 0; k < one.bonds.size(); k += width)
     damaged += std::max(one.bonds[k + 3 + OMEGA_T], one.bonds[k + 3 + OMEGA_C]) > 0;
   EXPECT_GT(damaged, 0);
+  // The probes were made before load steps 1 and 4 only.
+  std::ifstream log(first + "/debug.txt");
+  ASSERT_TRUE(log) << first << "/debug.txt";
+  long probed = 0;
+  for (std::string line; std::getline(log, line);)
+    probed += line.find("stiffness probes") != std::string::npos;
+  EXPECT_EQ(probed, 2);
 }
 
 TEST(QuasiStaticDeterminism, SameBitsOnRanksThreadsAndRestart) {
