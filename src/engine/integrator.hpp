@@ -216,6 +216,10 @@ class Integrator {
     // The curve: |factor × loads| and the work-conjugate displacement; under displacement
     // control the reaction and the displacement along the control's direction.
     double load = 0, displacement = 0;
+    // Under force control, a converged load step's compliance (its displacement along the
+    // loads per load) over the last equilibrium's secant u/λ: 1 for a linear structure,
+    // growing as the structure softens towards a peak (0: not measured).
+    double softening = 0;
   };
   Relaxed relax(Context& ctx, const Solver& solver, const std::string& source, double factor,
                 double previous, const std::function<void()>& forces,

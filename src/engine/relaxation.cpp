@@ -667,6 +667,8 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   iterations_ += static_cast<double>(out.iterations);
   out.load = factor * loadTotal;
   out.displacement = alongLoads();
+  if (out.converged && stepping)
+    out.softening = (out.displacement - lastAlong) / (factor - previous) / (lastAlong / previous);
   if (control.active()) {
     // The force the control exerts along its direction: minus the internal forces on the
     // controlled particles (the evaluation at which the load step converged).

@@ -17,6 +17,12 @@ namespace pdq {
 
 namespace {
 
+// Quasi-static load stepping: a converged load step this many times as compliant as the
+// secant of the last equilibrium halves the next increment, at most this many times below
+// the largest when no peak bracket is asked for.
+constexpr double kSoftening = 1.75;
+constexpr int kSofteningCuts = 4;
+
 // A particle's move in a step relative to a partner it is still bonded to (squares).
 struct Jump {
   double relative = -1, own = 0;  // the relative move, and the particle's own
@@ -431,7 +437,17 @@ bool Simulation::relaxLoadStep() {
     if (r.converged && !tooMany) {
       if (path.progress == 0) path.first = static_cast<double>(r.iterations);
       path.progress += increment;
-      if (cuts == 0 && ++path.easy >= 2 && path.increment < 1)
+      // Nearing a peak: a load step over kSoftening times as compliant as the secant halves
+      // the next increment, down to the bracket the run ends at (peak_tolerance of the load
+      // factor; 2^-kSofteningCuts of the largest increment when there is none), so that the
+      // try beyond the peak is a short one (docs/quasi-static.md, "Step size").
+      const double floor = solver.peakTolerance > 0
+                               ? solver.peakTolerance * factor
+                               : staticFactor(std::ldexp(1.0, -kSofteningCuts));
+      if (r.softening > kSoftening && staticFactor(path.increment) >= floor &&
+          path.increment / 2 >= smallest)
+        path.increment /= 2, path.easy = 0;
+      else if (cuts == 0 && ++path.easy >= 2 && path.increment < 1)
         path.increment = std::min(1.0, 2 * path.increment), path.easy = 0;
       break;
     }

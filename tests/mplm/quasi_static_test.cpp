@@ -9,7 +9,9 @@
 //   * past its peak under force control, the structure's failure is detected within a load
 //     step's first iterations and reported, never looped on.
 //   * a load step may take ten times the first load step's iterations when that is more than
-//     max_iterations, also after a restart.
+//     max_iterations, also after a restart;
+//   * a load step that softened (over 1.75 times the secant's compliance) halves the next
+//     increment.
 #include "quasi_static.hpp"
 
 #include <gmock/gmock.h>
@@ -362,6 +364,52 @@ TEST(QuasiStatic, PeakToleranceEndsTheRunAtTheBracket) {
   if (comm.root())
     std::printf("peak: %g to %g with peak_tolerance 0.05, %g to %g without\n", coarse.factor,
                 coarse.beyond, fine.factor, fine.beyond);
+}
+
+// Nearing the peak under force control: a load step over 1.75 times as compliant as the
+// secant of the last equilibrium (its displacement along the loads per load, over u/λ)
+// halves the next increment, so that the try beyond the peak starts close to it; the load
+// steps before it keep or double theirs. The first load factor tried after each load step
+// is read from the log (6 significant digits).
+TEST(QuasiStatic, SofteningHalvesTheNextIncrement) {
+  Comm comm;
+  Solver solver = test::solver(1e-6, kLoadSteps, 100000000);
+  solver.maxCutBacks = 10;
+  const std::string dir = "qs_softening";
+  auto sim =
+      test::quasiStatic(comm, test::params({}), test::smallBeam(), solver, dir, kBeyondPeak / 5);
+  while (sim->advance()) {
+  }
+  sim->finish();
+  if (!comm.root()) return;
+  const auto rows = test::loadStepRows(dir);  // load_step, load_factor, ..., displacement (7)
+  std::ifstream log(dir + "/debug.txt");
+  std::stringstream text;
+  text << log.rdbuf();
+  auto firstTried = [&](long step) {  // the load factor of load step `step`'s first try
+    const std::string what = "load step " + std::to_string(step);
+    std::size_t at = text.str().find(what + " (load factor ");
+    const std::size_t converged = text.str().find(what + ": load factor ");
+    at = std::min(at, converged);
+    if (at == std::string::npos) return -1.0;
+    return std::stod(text.str().substr(text.str().find("load factor ", at) + 12));
+  };
+  long softened = 0;
+  for (std::size_t k = 1; k + 1 < rows.size(); ++k) {
+    const double before = rows[k][1] - rows[k - 1][1];
+    const double softening =
+        (rows[k][7] - rows[k - 1][7]) / before / (rows[k - 1][7] / rows[k - 1][1]);
+    const double tried = firstTried(static_cast<long>(rows[k + 1][0])) - rows[k][1];
+    if (softening > 1.75) {
+      ++softened;
+      EXPECT_NEAR(tried, before / 2, 1e-5 * rows[k][1]) << "after load step " << rows[k][0];
+    } else {
+      EXPECT_GE(tried, before - 1e-5 * rows[k][1]) << "after load step " << rows[k][0];
+    }
+    std::printf("load step %g: %.3g times as compliant, increment %g, the next tried %g\n",
+                rows[k][0], softening, before, tried);
+  }
+  EXPECT_GT(softened, 0) << "no load step softened past 1.75 before the peak";
 }
 
 }  // namespace
