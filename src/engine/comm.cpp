@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
+#include <string>
 #include <thread>
 #include <type_traits>
 
@@ -243,10 +245,25 @@ void Comm::abort(int code) const {
   std::abort();
 }
 
+namespace {
+// Open MPI tries its UCX messaging layer first, and where UCX finds no network to drive (a
+// laptop, this kind of virtual machine) it declines after about 0.2 s and Open MPI takes its
+// own layer over shared memory (ob1). When every rank is on this node (or there is one
+// process), that shared-memory layer serves, so unless the user chose a layer, it is asked
+// for at once. Jobs over several nodes keep Open MPI's choice.
+void preferSharedMemoryOnOneNode() {
+  if (std::getenv("OMPI_MCA_pml")) return;
+  const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
+  const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  if (!size || (local && std::string(size) == local)) setenv("OMPI_MCA_pml", "ob1", 0);
+}
+}  // namespace
+
 MpiSession::MpiSession(int* argc, char*** argv, bool threadMultiple) {
   int initialised = 0, provided = 0;
   MPI_Initialized(&initialised);
   if (!initialised) {
+    preferSharedMemoryOnOneNode();
     MPI_Init_thread(argc, argv, threadMultiple ? MPI_THREAD_MULTIPLE : MPI_THREAD_FUNNELED,
                     &provided);
     owns_ = true;
