@@ -16,6 +16,8 @@
 #   "not run"). ~25 minutes for the bisection on 2 cores, a few for the quasi-static runs.
 # The 3D members are not in the default list (hours each, docs/mplm3d.md): name them,
 #   bench/mplm/validate.sh build 2 cantilever3d rc_cantilever3d rc_beam3d
+# SPACING=0.04 runs each example at that lattice spacing ([model] spacing added to a copy
+# of its file; the 3D members then take minutes); its pictures stay in the work folder.
 set -euo pipefail
 build=$(cd "${1:-build}" && pwd)
 ranks=${2:-2}
@@ -36,7 +38,7 @@ strength() {
   bracket="not run" mode="" times="-" rep=/dev/null
   case " $methods " in *" $m "*) ;; *) return 0 ;; esac
   if ! t=$( { time (cd "$m" && OMP_NUM_THREADS=1 mpirun --oversubscribe --allow-run-as-root \
-    -np "$ranks" "$build/pdq" strength "$src/examples/mplm/$e.toml" --set "method=$m" \
+    -np "$ranks" "$build/pdq" strength "$sc" --set "method=$m" \
     ${QS_MASSES:+$( [ "$m" = quasi_static ] && echo "--set qs_masses=$QS_MASSES")} \
     >"$e.log" 2>&1); } 2>&1); then
     bracket="failed: see $work/$m/$e.log"
@@ -52,7 +54,11 @@ echo "| example | thesis MPLM | ACI 318 / classical | pdq quasi-static | quasi-s
   "pdq dynamic | failure mode | quasi-static time | dynamic time |"
 echo "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"
 for e in "${examples[@]}"; do
-  sc=$src/examples/mplm/$e.toml
+  sc=$src/examples/mplm/$e.toml picture=$src/docs/mplm/$e.png
+  if [ -n "${SPACING:-}" ]; then
+    sed "/^\[model\]/a spacing = $SPACING" "$sc" >"$work/$e.toml"
+    sc=$work/$e.toml picture=$work/$e.png
+  fi
   strength "$e" quasi_static
   qs=$bracket qsTime=$times qsMode=$mode
   aci=$(field "ACI 318"; field classical)
@@ -68,7 +74,7 @@ for e in "${examples[@]}"; do
     if [ -n "$restart" ]; then
       load=$(field strength | sed -E 's/^[^ ]+ to ([^ ]+ [^ ]+) .*/\1/')
       (cd bisection && "$build/pdq" post picture "$sc" --restart "$restart" \
-        -o "$src/docs/mplm/$e.png" \
+        -o "$picture" \
         --set "title=$e: damage in the lowest failing trial, $load" >>"$e.log" 2>&1) ||
         echo "(picture of $e failed: see $work/bisection/$e.log)"
     fi
@@ -76,4 +82,5 @@ for e in "${examples[@]}"; do
   echo "| $e | $ref | $aci | $qs | ${ratio:--} | $dyn | $mode | $qsTime | $dynTime |"
 done
 echo
-echo "reports: $work/{quasi_static,bisection}/*_out/strength/strength.txt; pictures: $src/docs/mplm/"
+echo "reports: $work/{quasi_static,bisection}/*_out/strength/strength.txt; pictures:" \
+  "$(dirname "$picture")/"
