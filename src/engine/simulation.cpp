@@ -440,7 +440,7 @@ bool Simulation::relaxLoadStep() {
       // Nearing a peak: a load step over kSoftening times as compliant as the secant halves
       // the next increment, down to the bracket the run ends at (peak_tolerance of the load
       // factor; 2^-kSofteningCuts of the largest increment when there is none), so that the
-      // try beyond the peak is a short one (docs/quasi-static.md, "Step size").
+      // try beyond the peak is a short one (docs/quasi-static.md, "Nearing the peak").
       const double floor = solver.peakTolerance > 0
                                ? solver.peakTolerance * factor
                                : staticFactor(std::ldexp(1.0, -kSofteningCuts));

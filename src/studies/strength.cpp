@@ -291,8 +291,12 @@ namespace {
 // (docs/quasi-static.md, "Ranks").
 constexpr std::size_t kParticlesPerRank = 400;
 
-// The quasi-static run itself, on the ranks of `comm`.
-Result staticRun(const Case& c, double hi, Comm& comm, const StaticOptions& opt) {
+// A quasi-static run that holds up to `hi` is run again towards twice as far, as the
+// bisection widens its bracket, at most this many times.
+constexpr int kRaises = 4;
+
+// The quasi-static run itself, on the ranks of `comm`: trial `index`.
+Result staticRun(const Case& c, double hi, int index, Comm& comm, const StaticOptions& opt) {
   RunConfig run = c.run;
   run.procs = {0, 0, 0};
   run.loading = {};
@@ -307,7 +311,7 @@ Result staticRun(const Case& c, double hi, Comm& comm, const StaticOptions& opt)
   run.solver.masses = opt.masses;
   run.steps = opt.loadSteps;
   Trial tr;
-  tr.index = 1;
+  tr.index = index;
   tr.dir = opt.outDir.empty() ? "" : opt.outDir + "/quasi_static";
   run.outDir = tr.dir.empty() ? "." : tr.dir;
   auto simPtr = simulation(c, c.params, run, comm);
@@ -354,23 +358,30 @@ Result staticStrength(const Case& c, double hi, Comm& comm, const StaticOptions&
   Result r;
   std::vector<char> message;
   if (comm.rank() < ranks) {
-    r = staticRun(c, hi, group, opt);
+    for (int k = 0;; ++k, hi *= 2) {
+      const Result run = staticRun(c, hi, k + 1, group, opt);
+      r.lower = run.lower, r.upper = run.upper, r.mode = run.mode;
+      r.trials.push_back(run.trials[0]);
+      if (r.upper >= 0 || k == kRaises) break;
+    }
     if (comm.root()) {
-      pack(r.trials[0], message);
       const double bounds[2] = {r.lower, r.upper};
       const char* p = reinterpret_cast<const char*>(bounds);
       message.insert(message.end(), p, p + sizeof bounds);
+      for (const Trial& t : r.trials) pack(t, message);
     }
   }
   message = comm.broadcast(std::move(message));
   if (comm.rank() < ranks) return r;
-  std::size_t at = 0;
-  Trial tr = unpack(message, at);
-  tr.dir = opt.outDir.empty() ? "" : opt.outDir + "/quasi_static";
   double bounds[2];
-  std::memcpy(bounds, message.data() + at, sizeof bounds);
-  r.lower = bounds[0], r.upper = bounds[1], r.mode = tr.mode;
-  r.trials = {tr};
+  std::memcpy(bounds, message.data(), sizeof bounds);
+  r.lower = bounds[0], r.upper = bounds[1];
+  for (std::size_t at = sizeof bounds; at < message.size();) {
+    Trial tr = unpack(message, at);
+    tr.dir = opt.outDir.empty() ? "" : opt.outDir + "/quasi_static";
+    r.mode = tr.mode;
+    r.trials.push_back(std::move(tr));
+  }
   return r;
 }
 

@@ -100,6 +100,26 @@ TEST(CliStrength, QuasiStaticSameOnAnyNumberOfRanks) {
   }
 }
 
+// A quasi-static run that holds up to hi is run again towards twice hi, as the bisection
+// widens its bracket: the plate (about 3 MPa) holds to hi = 1.6 MPa, then fails below 3.2.
+TEST(CliStrength, QuasiStaticRaisesHiWhileTheMemberHolds) {
+  const std::string dir = freshDir("strength_qs_raise");
+  const auto r = runPdq(
+      {"strength", plate(), "--set", "method=quasi_static", "--set", "lo=0.5", "--set", "hi=1.6"},
+      dir);
+  ASSERT_EQ(r.code, 0) << r.all();
+  double lo = 0, hi = 0;
+  const auto at = r.out.find("\nstrength: ");
+  ASSERT_NE(at, std::string::npos) << r.out;
+  ASSERT_EQ(std::sscanf(r.out.substr(at).c_str(), "\nstrength: %lf to %lf", &lo, &hi), 2);
+  EXPECT_GT(lo, 1.6);
+  EXPECT_LT(lo, hi);
+  EXPECT_LE(hi, 3.2);
+  const std::string csv = readFile(dir + "/tension_x_out/strength/trials.csv");
+  EXPECT_EQ(lines(csv), 3) << csv;  // header, the run that held to 1.6 MPa, the one that failed
+  EXPECT_THAT(r.out, HasSubstr("1.6  holds"));
+}
+
 TEST(CliStrength, BadOptionsAreRefusedByName) {
   const std::string dir = freshDir("strength_bad");
   auto r = runPdq({"strength", plate(), "--set", "at_onse=2"}, dir);
