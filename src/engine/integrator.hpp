@@ -218,7 +218,8 @@ class Integrator {
     double load = 0, displacement = 0;
     // Under force control, a converged load step's compliance (its displacement along the
     // loads per load) over the last equilibrium's secant u/λ: 1 for a linear structure,
-    // growing as the structure softens towards a peak (0: not measured).
+    // growing as the structure softens towards a peak (0: not measured; measured for the
+    // modified Newton iteration only, whose work shrinks with the increment).
     double softening = 0;
   };
   Relaxed relax(Context& ctx, const Solver& solver, const std::string& source, double factor,

@@ -667,7 +667,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
   iterations_ += static_cast<double>(out.iterations);
   out.load = factor * loadTotal;
   out.displacement = alongLoads();
-  if (out.converged && stepping)
+  if (out.converged && stepping && newton)
     out.softening = (out.displacement - lastAlong) / (factor - previous) / (lastAlong / previous);
   if (control.active()) {
     // The force the control exerts along its direction: minus the internal forces on the
