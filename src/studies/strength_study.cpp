@@ -127,9 +127,10 @@ void strengthStudy(const Scenario& sc, const Params& o, Comm& comm, bool resume,
     std::fflush(stdout);
   };
   if (oneRun && comm.root())
-    std::printf("quasi-static: one run towards %.6g %s in %ld load steps (again towards twice "
-                "as far while it holds)\n",
-                hi, ref.unit.c_str(), so.loadSteps);
+    std::printf(
+        "quasi-static: one run towards %.6g %s in %ld load steps (again towards twice "
+        "as far while it holds)\n",
+        hi, ref.unit.c_str(), so.loadSteps);
   const strength::Result st = oneRun ? strength::staticStrength(c, hi, comm, so)
                                      : strength::findStrength(c, lo, hi, comm, opt);
   if (oneRun)
@@ -149,8 +150,8 @@ void strengthStudy(const Scenario& sc, const Params& o, Comm& comm, bool resume,
             "{}/ParticleAlterAttrs.{}.rst)\n",
             t.dir, pb.source, t.dir, t.steps);
   } else if (st.upper < 0 && oneRun) {
-    report += fmt::format("in equilibrium up to {:.4g} {} (16 times hi): raise hi\n", st.lower,
-                          ref.unit);
+    report +=
+        fmt::format("in equilibrium up to {:.4g} {} (16 times hi): raise hi\n", st.lower, ref.unit);
   } else if (st.upper < 0) {
     report += fmt::format("no failure found up to {:.4g} {}: raise hi or max_trials\n",
                           st.trials.empty() ? hi : st.trials.back().load, ref.unit);

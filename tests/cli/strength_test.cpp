@@ -118,6 +118,16 @@ TEST(CliStrength, QuasiStaticRaisesHiWhileTheMemberHolds) {
   const std::string csv = readFile(dir + "/tension_x_out/strength/trials.csv");
   EXPECT_EQ(lines(csv), 3) << csv;  // header, the run that held to 1.6 MPa, the one that failed
   EXPECT_THAT(r.out, HasSubstr("1.6  holds"));
+  // The outputs are the second run's alone: one final state, the one the report names (the
+  // held run's, at another step, is gone).
+  const std::string qs = dir + "/tension_x_out/strength/quasi_static";
+  std::string state;
+  for (const auto& f : filesUnder(qs))
+    if (f.rfind("ParticleAlterAttrs.", 0) == 0) {
+      EXPECT_TRUE(state.empty()) << state << " and " << f;
+      state = f;
+    }
+  EXPECT_THAT(r.out, HasSubstr("quasi_static/" + state + ")"));
 }
 
 TEST(CliStrength, BadOptionsAreRefusedByName) {
