@@ -248,14 +248,17 @@ void Comm::abort(int code) const {
 namespace {
 // Open MPI tries its UCX messaging layer first, and where UCX finds no network to drive (a
 // laptop, this kind of virtual machine) it declines after about 0.2 s and Open MPI takes its
-// own layer over shared memory (ob1). When every rank is on this node (or there is one
-// process), that shared-memory layer serves, so unless the user chose a layer, it is asked
-// for at once. Jobs over several nodes keep Open MPI's choice.
+// own layer over shared memory (ob1). When every rank is on this node (mpirun says so), or
+// the process was started alone, that shared-memory layer serves, so unless the user chose
+// a layer, it is asked for at once. Jobs over several nodes, or started by another launcher
+// (srun), keep Open MPI's choice.
 void preferSharedMemoryOnOneNode() {
   if (std::getenv("OMPI_MCA_pml")) return;
   const char* size = std::getenv("OMPI_COMM_WORLD_SIZE");
   const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
-  if (!size || (local && std::string(size) == local)) setenv("OMPI_MCA_pml", "ob1", 0);
+  const bool alone = !size && !std::getenv("PMIX_RANK") && !std::getenv("PMI_RANK") &&
+                     !std::getenv("SLURM_PROCID");
+  if (alone || (size && local && std::string(size) == local)) setenv("OMPI_MCA_pml", "ob1", 0);
 }
 }  // namespace
 
