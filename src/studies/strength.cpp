@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <memory>
 #include <type_traits>
 
@@ -359,12 +358,7 @@ Result staticStrength(const Case& c, double hi, Comm& comm, const StaticOptions&
   Result r;
   std::vector<char> message;
   if (comm.rank() < ranks) {
-    for (int k = 0;; ++k, hi *= 2) {
-      // A run again goes over the held run's load path: its outputs replace the held run's.
-      if (k > 0 && !opt.outDir.empty()) {
-        if (group.root()) std::filesystem::remove_all(opt.outDir + "/quasi_static");
-        group.barrier();
-      }
+    for (int k = 0;; ++k, hi *= 2) {  // a run again replaces the held run's outputs
       const Result run = staticRun(c, hi, k + 1, group, opt);
       r.lower = run.lower, r.upper = run.upper, r.mode = run.mode;
       r.trials.push_back(run.trials[0]);

@@ -119,7 +119,7 @@ TEST(CliStrength, QuasiStaticRaisesHiWhileTheMemberHolds) {
   EXPECT_EQ(lines(csv), 3) << csv;  // header, the run that held to 1.6 MPa, the one that failed
   EXPECT_THAT(r.out, HasSubstr("1.6  holds"));
   // The outputs are the second run's alone: one final state, the one the report names (the
-  // held run's, at another step, is gone).
+  // held run's, at another step, removed as stale when the second began).
   const std::string qs = dir + "/tension_x_out/strength/quasi_static";
   std::string state;
   for (const auto& f : filesUnder(qs))
