@@ -247,7 +247,7 @@ void Comm::abort(int code) const {
 
 namespace {
 // Open MPI tries its UCX messaging layer first, and where UCX finds no network to drive (a
-// laptop, this kind of virtual machine) it declines after about 0.2 s and Open MPI takes its
+// laptop, this kind of virtual machine) it declines only after a search, and Open MPI takes its
 // own layer over shared memory (ob1). When every rank is on this node (mpirun says so), or
 // the process was started alone, that shared-memory layer serves, so unless the user chose
 // a layer, it is asked for at once. Jobs over several nodes, or started by another launcher
