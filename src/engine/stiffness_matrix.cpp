@@ -32,8 +32,7 @@ struct StiffnessMatrix::Factor {
   std::vector<long> out;  // per gathered DOF: where it stands in the solution sent back
   std::size_t total = 0;  // gathered DOFs
   long unknowns = 0, entries = 0, fill = 0;  // K̂'s stored entries, its factor's
-  bool analysed = false;                     // the ordering of the pattern below is in ldlt
-  std::vector<int> outer, inner;             // K̂'s pattern (compressed columns)
+  std::vector<int> outer, inner;  // the pattern (compressed columns) ldlt was ordered for
 };
 
 StiffnessMatrix::StiffnessMatrix() = default;
@@ -95,21 +94,7 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
         if (isFree[k]) F.row[k] = unknowns++;
       }
     F.unknowns = unknowns;
-    // A particle's place among the gathered ones: a table by ID where the IDs are dense
-    // enough, else a search of the sorted IDs.
-    const Gid top = order.empty() ? 0 : order.back().first;
-    std::vector<long> place;
-    if (!order.empty() && order.front().first >= 0 &&
-        top < 8 * static_cast<Gid>(order.size()) + 64) {
-      place.assign(static_cast<std::size_t>(top) + 1, -1);
-      for (const auto& [g, q] : order) place[static_cast<std::size_t>(g)] = static_cast<long>(q);
-    }
     auto unknown = [&](Gid g, int d) -> long {
-      if (!place.empty()) {
-        if (g < 0 || g > top) return -1;
-        const long q = place[static_cast<std::size_t>(g)];
-        return q < 0 ? -1 : F.row[static_cast<std::size_t>(q) * dofs + d];
-      }
       auto it = std::lower_bound(order.begin(), order.end(), std::pair<Gid, std::size_t>{g, 0});
       if (it == order.end() || it->first != g) return -1;
       return F.row[it->second * dofs + d];
@@ -146,12 +131,11 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
     // stays the same (the interactions that break only change values until one is lost).
     const std::span<const int> outer(K.outerIndexPtr(), static_cast<std::size_t>(unknowns) + 1),
         inner(K.innerIndexPtr(), static_cast<std::size_t>(K.nonZeros()));
-    if (!F.analysed || !std::ranges::equal(outer, F.outer) || !std::ranges::equal(inner, F.inner)) {
+    if (!std::ranges::equal(outer, F.outer) || !std::ranges::equal(inner, F.inner)) {
       F.ldlt.analyzePattern(K);
       F.outer.assign(outer.begin(), outer.end());
       F.inner.assign(inner.begin(), inner.end());
       F.fill = F.ldlt.predictedNonzeros();
-      F.analysed = true;
     }
     F.entries = K.nonZeros();
     Outcome outcome = Outcome::TooLarge;
