@@ -88,8 +88,20 @@ struct Four {
   return f;
 }
 
-[[gnu::target("avx2")]] inline __m256d column(const double* a, std::size_t b, int c) {
-  return _mm256_set_pd(a[3 * (b + 3) + c], a[3 * (b + 2) + c], a[3 * (b + 1) + c], a[3 * b + c]);
+// The three attributes of bonds b .. b + 3 (rows of three doubles: a_k b_k c_k) as columns.
+struct Columns {
+  __m256d a, b, c;
+};
+
+[[gnu::target("avx2")]] inline Columns columns(const double* attr, std::size_t b) {
+  const double* p = attr + 3 * b;
+  // m0 = a0 b0 c0 a1, m1 = b1 c1 a2 b2, m2 = c2 a3 b3 c3; then the 128-bit halves of
+  // bonds 0, 1 (low) and 2, 3 (high): P = a0 b0 | a2 b2, Q = c0 a1 | c2 a3, R = b1 c1 | b3 c3.
+  const __m256d m0 = _mm256_loadu_pd(p), m1 = _mm256_loadu_pd(p + 4), m2 = _mm256_loadu_pd(p + 8);
+  const __m256d P = _mm256_permute2f128_pd(m0, m1, 0x30);
+  const __m256d Q = _mm256_permute2f128_pd(m0, m2, 0x21);
+  const __m256d R = _mm256_blend_pd(m1, m2, 0xC);
+  return {_mm256_shuffle_pd(P, Q, 0xA), _mm256_shuffle_pd(P, R, 0x5), _mm256_shuffle_pd(Q, R, 0xA)};
 }
 
 [[gnu::target("avx2")]] double dilatationAvx2(const LpsView& v, std::size_t i, std::size_t b0,
@@ -100,7 +112,8 @@ struct Four {
   const double* p[4];
   for (; b + 4 <= b1; b += 4) {
     const Four f = four(v, xi, b, p);
-    const __m256d len0 = column(v.attr, b, 0), w = column(v.attr, b, 1);
+    const Columns c = columns(v.attr, b);
+    const __m256d len0 = c.a, w = c.b;
     s = _mm256_add_pd(s, _mm256_mul_pd(_mm256_mul_pd(w, len0), _mm256_sub_pd(f.len, len0)));
   }
   alignas(32) double l[4];
@@ -119,8 +132,9 @@ struct Four {
   const double* p[4];
   for (; b + 4 <= b1; b += 4) {
     const Four f = four(v, xi, b, p);
-    const __m256d len0 = column(v.attr, b, 0), invMj = column(v.attr, b, 2);
-    __m256d w = column(v.attr, b, 1);
+    const Columns c = columns(v.attr, b);
+    const __m256d len0 = c.a, invMj = c.c;
+    __m256d w = c.b;
     const std::int32_t* j = v.partner + b;
     const __m256d thj = _mm256_set_pd(v.theta[j[3]], v.theta[j[2]], v.theta[j[1]], v.theta[j[0]]);
     const __m256d ext = _mm256_sub_pd(f.len, len0);
