@@ -7,6 +7,9 @@
 namespace pdq::peri {
 namespace {
 
+// The bond (of four) that each vector lane holds in the AVX2 kernel.
+constexpr int kLaneBond[4] = {0, 2, 1, 3};
+
 // One bond into lane sums s[3]: returns nothing, breaks the bond when overstretched.
 inline void bond(const PmbView& v, const double* xi, std::size_t b, double* sx, double* sy,
                  double* sz) {
@@ -39,21 +42,23 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
                 xi2 = _mm256_set1_pd(xi[2]), sc = _mm256_set1_pd(v.criticalStretch);
   __m256d ax = _mm256_setzero_pd(), ay = _mm256_setzero_pd(), az = _mm256_setzero_pd();
   std::size_t b = b0;
+  // The lanes hold bonds b, b + 2, b + 1, b + 3 (the order in which the attributes come
+  // out of one unpack per 128-bit half); each lane still sums its own bonds in order.
   for (; b + 4 <= b1; b += 4) {
     // Rows of the four partners (x, y, z, and one more column), transposed.
     const __m256d r0 = _mm256_loadu_pd(v.x + v.partner[b] * v.nA);
     const __m256d r1 = _mm256_loadu_pd(v.x + v.partner[b + 1] * v.nA);
     const __m256d r2 = _mm256_loadu_pd(v.x + v.partner[b + 2] * v.nA);
     const __m256d r3 = _mm256_loadu_pd(v.x + v.partner[b + 3] * v.nA);
-    const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
-    const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
+    const __m256d t0 = _mm256_unpacklo_pd(r0, r2), t1 = _mm256_unpackhi_pd(r0, r2);
+    const __m256d t2 = _mm256_unpacklo_pd(r1, r3), t3 = _mm256_unpackhi_pd(r1, r3);
     const __m256d dx = _mm256_sub_pd(_mm256_permute2f128_pd(t0, t2, 0x20), xi0);
     const __m256d dy = _mm256_sub_pd(_mm256_permute2f128_pd(t1, t3, 0x20), xi1);
     const __m256d dz = _mm256_sub_pd(_mm256_permute2f128_pd(t0, t2, 0x31), xi2);
     // Bond attributes (length, weight) of the four bonds, de-interleaved.
     const __m256d a01 = _mm256_loadu_pd(v.attr + 2 * b), a23 = _mm256_loadu_pd(v.attr + 2 * b + 4);
-    const __m256d len0 = _mm256_permute4x64_pd(_mm256_unpacklo_pd(a01, a23), 0xD8);
-    __m256d w = _mm256_permute4x64_pd(_mm256_unpackhi_pd(a01, a23), 0xD8);
+    const __m256d len0 = _mm256_unpacklo_pd(a01, a23);
+    __m256d w = _mm256_unpackhi_pd(a01, a23);
     const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(
         _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)));
     const __m256d ext = _mm256_sub_pd(len, len0);
@@ -62,8 +67,9 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
       if (const int m = _mm256_movemask_pd(over)) {
         for (int k = 0; k < 4; ++k)
           if (m & (1 << k)) {
-            v.attr[2 * (b + k) + 1] = 0;
-            v.bonds->kill(b + k);
+            const std::size_t bk = b + kLaneBond[k];
+            v.attr[2 * bk + 1] = 0;
+            v.bonds->kill(bk);
           }
         w = _mm256_andnot_pd(over, w);
       }
@@ -73,10 +79,16 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
     ay = _mm256_add_pd(ay, _mm256_mul_pd(t, dy));
     az = _mm256_add_pd(az, _mm256_mul_pd(t, dz));
   }
-  alignas(32) double lx[4], ly[4], lz[4];
-  _mm256_store_pd(lx, ax);
-  _mm256_store_pd(ly, ay);
-  _mm256_store_pd(lz, az);
+  alignas(32) double sx[4], sy[4], sz[4];
+  _mm256_store_pd(sx, ax);
+  _mm256_store_pd(sy, ay);
+  _mm256_store_pd(sz, az);
+  double lx[4], ly[4], lz[4];
+  for (int k = 0; k < 4; ++k) {
+    lx[kLaneBond[k]] = sx[k];
+    ly[kLaneBond[k]] = sy[k];
+    lz[kLaneBond[k]] = sz[k];
+  }
   for (int k = 0; b < b1; ++b, ++k) bond(v, xi, b, &lx[k], &ly[k], &lz[k]);
   finish(lx, ly, lz, acc);
 }
