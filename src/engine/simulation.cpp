@@ -159,6 +159,7 @@ Domain Simulation::makeDomain() const {
 
 void Simulation::setup() {
   if (setUp_) return;
+  timers_.start();
   Timers::Scope t(timers_, Phase::Setup);
   const double horizon = model_->horizon();
   const double minCell = cfg_.minCellSize > 0 ? cfg_.minCellSize : model_->minCellSize();
@@ -431,7 +432,10 @@ bool Simulation::relaxLoadStep() {
     }
     factor = staticFactor(path.progress + increment);
     ctx_->setStaticFactor(factor);
-    r = integrator_->relax(*ctx_, solver, cfg_.source, factor, previous, forces, exchange);
+    {
+      Timers::Scope t(timers_, Phase::Integrate);  // less the forces and halos it times
+      r = integrator_->relax(*ctx_, solver, cfg_.source, factor, previous, forces, exchange);
+    }
     broken = brokenInteractions();
     const bool tooMany = solver.maxBroken > 0 && broken - brokenBefore > solver.maxBroken;
     if (r.converged && !tooMany) {
@@ -797,6 +801,7 @@ void Simulation::finish() {
 }
 
 void Simulation::writeLogs() {
+  timers_.settleOther();
   std::ostringstream os;
   os << "# pdq timing: wall-clock seconds per phase over " << comm_.size() << " rank(s), "
      << step_ - cfg_.firstStep << " steps (" << cfg_.firstStep << " to " << step_ << ")\n";

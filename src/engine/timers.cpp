@@ -1,5 +1,6 @@
 #include "engine/timers.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <ctime>
 
@@ -30,6 +31,21 @@ const char* phaseName(Phase p) {
     default:
       return "?";
   }
+}
+
+void Timers::start() {
+  started_ = std::chrono::steady_clock::now();
+  startedCpu_ = processCpuSeconds();
+}
+
+void Timers::settleOther() {
+  const int other = static_cast<int>(Phase::Other);
+  double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+  double cpu = processCpuSeconds() - startedCpu_;
+  for (int p = 0; p < static_cast<int>(Phase::Count); ++p)
+    if (p != other) wall -= t_[p], cpu -= cpu_[p];
+  t_[other] = std::max(0.0, wall);
+  cpu_[other] = std::max(0.0, cpu);
 }
 
 std::string cpuBreakdown(const Timers& t, double loopCpu) {

@@ -24,25 +24,51 @@ class Timers {
   double& operator[](Phase p) { return t_[static_cast<int>(p)]; }
   double operator[](Phase p) const { return t_[static_cast<int>(p)]; }
   double cpu(Phase p) const { return cpu_[static_cast<int>(p)]; }
+  // The clocks of `other` start (a run's set-up).
+  void start();
+  // The wall clock and CPU time since start() outside every phase's scope, as the phase
+  // `other` (reductions, checks, work no phase names).
+  void settleOther();
 
+  // A phase's scope. Scopes nest: the time of an inner scope is its phase's alone, not the
+  // enclosing one's (the quasi-static relaxation, timed as integrate, calls the force).
   class Scope {
    public:
-    Scope(Timers& t, Phase p)
-        : t_(t), p_(p), start_(std::chrono::steady_clock::now()), cpu0_(processCpuSeconds()) {}
-    ~Scope() {
-      t_[p_] += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-      t_.cpu_[static_cast<int>(p_)] += processCpuSeconds() - cpu0_;
+    Scope(Timers& t, Phase p) : t_(t), p_(p), outer_(t.top_) {
+      const Time now = std::chrono::steady_clock::now();
+      const double cpu = processCpuSeconds();
+      if (outer_) outer_->charge(now, cpu);
+      t_.top_ = this;
+      start_ = now, cpu0_ = cpu;
     }
+    ~Scope() {
+      const Time now = std::chrono::steady_clock::now();
+      const double cpu = processCpuSeconds();
+      charge(now, cpu);
+      t_.top_ = outer_;
+      if (outer_) outer_->start_ = now, outer_->cpu0_ = cpu;
+    }
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
 
    private:
+    using Time = std::chrono::steady_clock::time_point;
+    void charge(Time now, double cpu) {
+      t_[p_] += std::chrono::duration<double>(now - start_).count();
+      t_.cpu_[static_cast<int>(p_)] += cpu - cpu0_;
+    }
     Timers& t_;
     Phase p_;
-    std::chrono::steady_clock::time_point start_;
-    double cpu0_;
+    Scope* outer_;
+    Time start_;
+    double cpu0_ = 0;
   };
 
  private:
   std::array<double, static_cast<int>(Phase::Count)> t_{}, cpu_{};
+  Scope* top_ = nullptr;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+  double startedCpu_ = processCpuSeconds();
 };
 
 }  // namespace pdq
