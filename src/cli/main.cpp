@@ -1,5 +1,6 @@
 // The pdq command: `pdq run|prep|post|strength|info|list ...`; `pdq --help` for more.
 // Runs alone (one rank) or under mpirun; every rank parses the same command line.
+#include <malloc.h>
 #include <omp.h>
 
 #include <cstdio>
@@ -14,6 +15,12 @@
 using namespace pdq::cli;
 
 int main(int argc, char** argv) {
+  // Memory freed stays with the process (up to 1 GiB): glibc would give large blocks back to
+  // the system at once, and each new one (the quasi-static solver's matrix and messages at
+  // every load step) would fault its pages in again (docs/quasi-static.md, "Where the work
+  // goes"). Blocks over 32 MiB are still mapped and unmapped alone.
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   pdq::MpiSession mpi(&argc, &argv, true);
   // Threads are asked for with OMP_NUM_THREADS; OpenMP's own default, a thread per core in
   // every rank, makes each of a step's parallel loops wait for the rank's slowest thread,
