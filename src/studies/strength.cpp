@@ -286,9 +286,8 @@ namespace {
 
 // The quasi-static run takes one rank per this many particles: each relaxation iteration is
 // one force evaluation and two messages (the halo and the exact sums), and on fewer
-// particles per rank the messages' waits cost more than the split saves. The 1.16 m beams
-// (about 1000 particles) relax 1.4-1.5 times faster in wall time on 2 ranks than on one
-// (docs/quasi-static.md, "Ranks").
+// particles per rank the messages' waits cost more than the split saves; the 1.16 m beams
+// (about 1000 particles) still gain from a second rank (docs/quasi-static.md, "Ranks").
 constexpr std::size_t kParticlesPerRank = 400;
 
 // A quasi-static run that holds up to `hi` is run again towards twice as far, as the
