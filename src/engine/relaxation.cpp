@@ -19,8 +19,12 @@
 // all instead of the relaxation revisiting which interaction cracks. The converged
 // evaluation's forces, computed with the damage it left, are the ones in equilibrium.
 // With masses = "assembled" the fictitious mass is the stiffness itself, assembled from the
-// same finite differences and factorised (engine/stiffness_matrix.hpp), and each iteration
-// is a modified Newton step x += K̂⁻¹ F instead. See docs/quasi-static.md.
+// same finite differences and factorised (engine/stiffness_matrix.hpp): each iteration is a
+// modified Newton step x += K̂⁻¹F while those steps converge fast (a linear structure's
+// load step takes one), and once one leaves more than kNewtonContraction of the last
+// out-of-balance force (cracking, K̂ stiffer than the lattice) the dynamic relaxation above
+// with K̂ as the mass matrix, v += K̂⁻¹F, x += v, whose momentum crosses the soft modes' slow
+// approach in far fewer iterations. See docs/quasi-static.md.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -76,8 +80,13 @@ constexpr double kFirstStepsPerCap = 10;
 // too stiff: 15 Newton iterations instead of 2).
 constexpr double kAssembledShift = 1e-12;
 // The assembled stiffness is used while its factor holds at most this many times the
-// matrix's own stored entries, so that a solve costs a few force evaluations at most.
-constexpr double kMaxFill = 16;
+// matrix's own stored entries, so that a solve costs about a force evaluation: 2D lattices
+// stay below it; 3D ones fill in more and relax with the Gershgorin masses
+// (docs/quasi-static.md, "Assembled stiffness").
+constexpr double kMaxFill = 8;
+// The assembled stiffness's iteration takes up momentum once a modified Newton step leaves
+// more than this share of the last out-of-balance force.
+constexpr double kNewtonContraction = 0.8;
 
 // The particles of each colour (owned ones), coloured by engine cell: cells `period` apart
 // along some axis, so at least 2 × passes undivided cells (each at least a horizon) apart:
@@ -531,6 +540,8 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     }
   }
   const bool newton = assembled_ && factorised_;
+  bool accelerated = false;  // the assembled stiffness's iteration has taken up momentum
+  double lastResidual = 0;
   std::vector<double> step(newton ? n * nd : 0);
   auto weight = [&](std::size_t i, int d) { return 1 / dofMass(i, d); };
   auto onSupport = [&](std::size_t i, int d) {
@@ -571,15 +582,16 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     // the undamped step and of a step from rest (kinetic damping); every kRunawayEvery
     // iterations the work of the loads on the displacements (the runaway look).
     const bool look = !control.active() && lastAlong != 0 && it % kRunawayEvery == 0;
-    enum { kResidual, kReaction, kMoving, kStill, kWork, kSums };
+    enum { kResidual, kReaction, kMoving, kStill, kWork, kPower, kSums };
     std::array<ExactSum, kSums> sums;
     for (std::size_t i = 0; i < n; ++i) {
-      double r2 = 0, R2 = 0, e = 0, e0 = 0, work = 0;
+      double r2 = 0, R2 = 0, e = 0, e0 = 0, work = 0, power = 0;
       for (int d = 0; d < nd; ++d) {
         const std::size_t k = nd * i + d;
         const double f = dofForce(P, i, d, factor), w = weight(i, d);
         if (free[k] && !(onSupport(i, d) && f < 0)) {
           r2 += f * f * w;
+          power += f * v[k];
           acc[k] = newton ? f : f / lambda[k];
         } else {
           R2 += f * f * w;
@@ -597,6 +609,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       sums[kMoving].add(e);
       sums[kStill].add(e0);
       sums[kWork].add(work);
+      sums[kPower].add(power);
     }
     ctx.sums(sums);
     const double rr = sums[kResidual].value(), reaction = sums[kReaction].value();
@@ -622,18 +635,23 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     if (look) {
       const double along = loadTotal > 0 ? sums[kWork].value() / loadTotal : 0.0;
       if (std::fabs(along) > kRunaway * std::fabs(lastAlong) ||
-          (stepping && std::fabs(along - lastAlong) > (newton ? 1.0 : kOvershoot) * stepLimit)) {
+          (stepping && std::fabs(along - lastAlong) > kOvershoot * stepLimit)) {
         out.converged = false;
         out.runaway = true;
         break;
       }
     }
-    // Modified Newton: the step K̂⁻¹ F of the out-of-balance forces. Kinetic damping: when
-    // the kinetic energy of the undamped step would fall, the motion has passed a peak and
-    // starts again from rest.
+    // Assembled stiffness: modified Newton steps K̂⁻¹F, then dynamic relaxation with K̂ as
+    // its mass matrix. Kinetic damping: when the kinetic energy of the undamped step would
+    // fall, the motion has passed a peak and starts again from rest.
     bool rest = false;
     if (newton) {
-      matrix_->solve(ctx, acc, step);
+      const double fk = matrix_->solve(ctx, acc, step);  // F·K̂⁻¹F
+      if (!accelerated && it > 0 && out.residual > kNewtonContraction * lastResidual)
+        accelerated = rest = true;
+      else if (accelerated)  // the kinetic energy ½vᵀK̂v changes by F·v + ½F·K̂⁻¹F
+        rest = sums[kPower].value() + fk / 2 < 0;
+      lastResidual = out.residual;
     } else {
       const double now = sums[kMoving].value(), fromRest = sums[kStill].value();
       rest = it == 0 || now < kinetic;
@@ -647,8 +665,11 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       for (int d = 0; d < nd; ++d) {
         const std::size_t k = nd * i + d;
         if (!free[k]) continue;
-        if (!newton) v[k] = rest ? acc[k] / 2 : v[k] + acc[k];
-        const double move = newton ? step[k] : v[k];
+        if (!newton)
+          v[k] = rest ? acc[k] / 2 : v[k] + acc[k];
+        else if (accelerated)
+          v[k] = rest ? step[k] / 2 : v[k] + step[k];
+        const double move = newton && !accelerated ? step[k] : v[k];
         if (d >= nLinear) {
           phi[d - nT_] = move;
           continue;

@@ -1,10 +1,11 @@
 #include "engine/stiffness_matrix.hpp"
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
+#include <cholmod.h>
+
 #include <algorithm>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 
 #include "engine/bytes.hpp"
 #include "engine/context.hpp"
@@ -15,24 +16,44 @@ namespace {
 using bytes::append;
 using bytes::take;
 
-// Eigen's LDLᵀ, which also tells the size of its factor once the pattern is analysed.
-struct Ldlt
-    : Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower, Eigen::AMDOrdering<int>> {
-  long predictedNonzeros() const {
-    long n = 0;
-    for (Eigen::Index k = 0; k < m_nonZerosPerCol.size(); ++k) n += m_nonZerosPerCol[k];
-    return n;
-  }
-};
+void check(const cholmod_common& c, const char* what) {
+  if (c.status < CHOLMOD_OK)
+    throw std::runtime_error(std::string("stiffness matrix: CHOLMOD failed in ") + what +
+                             " (status " + std::to_string(c.status) + ")");
+}
 }  // namespace
 
+// CHOLMOD's simplicial LDLᵀ (SuiteSparse): its ordering tries approximate minimum degree
+// and, where that fills in much (3D lattices), nested dissection (METIS), and keeps the
+// better; its analysis tells the size of the factor before the factorisation.
 struct StiffnessMatrix::Factor {
-  Ldlt ldlt;
+  cholmod_common c;
+  cholmod_sparse* K = nullptr;   // K̂'s lower half, compressed columns
+  cholmod_factor* L = nullptr;   // analysed for K's pattern; factorised when `factorised`
+  cholmod_dense* rhs = nullptr;  // the solves' right-hand side, and their workspaces
+  cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
   std::vector<long> row;  // per gathered DOF (rank order, then owned order): unknown or -1
   std::vector<long> out;  // per gathered DOF: where it stands in the solution sent back
   std::size_t total = 0;  // gathered DOFs
   long unknowns = 0, entries = 0, fill = 0;  // K̂'s stored entries, its factor's
-  std::vector<int> outer, inner;  // the pattern (compressed columns) ldlt was ordered for
+
+  Factor() {
+    cholmod_start(&c);
+    c.print = 0;  // its warnings (a matrix not positive definite) are handled here
+    c.supernodal = CHOLMOD_SIMPLICIAL;
+    c.final_ll = 0;
+  }
+  ~Factor() {
+    cholmod_free_sparse(&K, &c);
+    cholmod_free_factor(&L, &c);
+    cholmod_free_dense(&rhs, &c);
+    cholmod_free_dense(&x, &c);
+    cholmod_free_dense(&y, &c);
+    cholmod_free_dense(&e, &c);
+    cholmod_finish(&c);
+  }
+  Factor(const Factor&) = delete;
+  Factor& operator=(const Factor&) = delete;
 };
 
 StiffnessMatrix::StiffnessMatrix() = default;
@@ -103,9 +124,20 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
     // (max, min), where K_ji's half joins it; two terms add up to the same bits in either
     // order, so the ranks' order does not matter. A diagonal entry is whole, and the shift
     // (or the fallback of an empty row) comes after it.
-    std::vector<Eigen::Triplet<double>> triplets;
     const std::size_t nEntries = gathered.size() / sizeof(Entry);
-    triplets.reserve(nEntries + static_cast<std::size_t>(unknowns));
+    cholmod_triplet* T = cholmod_allocate_triplet(
+        static_cast<std::size_t>(unknowns), static_cast<std::size_t>(unknowns),
+        nEntries + static_cast<std::size_t>(unknowns), -1, CHOLMOD_REAL, &F.c);
+    check(F.c, "allocating the matrix");
+    auto* ti = static_cast<int*>(T->i);
+    auto* tj = static_cast<int*>(T->j);
+    auto* tx = static_cast<double*>(T->x);
+    auto add = [&](long i, long j, double value) {
+      ti[T->nnz] = static_cast<int>(i);
+      tj[T->nnz] = static_cast<int>(j);
+      tx[T->nnz] = value;
+      ++T->nnz;
+    };
     std::vector<unsigned char> hasRow(unknowns, 0);
     const char* in = gathered.data();
     for (std::size_t e = 0; e < nEntries; ++e) {
@@ -114,35 +146,48 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
       const long i = unknown(x.row, x.rowDof), j = unknown(x.col, x.colDof);
       if (i < 0 || j < 0) continue;
       hasRow[i] = 1;
-      triplets.emplace_back(static_cast<int>(std::max(i, j)), static_cast<int>(std::min(i, j)),
-                            i == j ? x.value : x.value / 2);
+      add(std::max(i, j), std::min(i, j), i == j ? x.value : x.value / 2);
     }
     for (std::size_t k = 0; k < F.total; ++k) {
-      const int i = static_cast<int>(F.row[k]);
+      const long i = F.row[k];
       if (i < 0) continue;
       if (!hasRow[i])
-        triplets.emplace_back(i, i, diag[k]);
+        add(i, i, diag[k]);
       else if (shift > 0)
-        triplets.emplace_back(i, i, shift * diag[k]);
+        add(i, i, shift * diag[k]);
     }
-    Eigen::SparseMatrix<double> K(unknowns, unknowns);
-    K.setFromTriplets(triplets.begin(), triplets.end());
+    cholmod_sparse* K = cholmod_triplet_to_sparse(T, 0, &F.c);
+    cholmod_free_triplet(&T, &F.c);
+    check(F.c, "assembling the matrix");
     // The ordering and the factor's structure depend on K̂'s pattern alone: kept while it
     // stays the same (the interactions that break only change values until one is lost).
-    const std::span<const int> outer(K.outerIndexPtr(), static_cast<std::size_t>(unknowns) + 1),
-        inner(K.innerIndexPtr(), static_cast<std::size_t>(K.nonZeros()));
-    if (!std::ranges::equal(outer, F.outer) || !std::ranges::equal(inner, F.inner)) {
-      F.ldlt.analyzePattern(K);
-      F.outer.assign(outer.begin(), outer.end());
-      F.inner.assign(inner.begin(), inner.end());
-      F.fill = F.ldlt.predictedNonzeros();
+    auto pattern = [&](const cholmod_sparse* A) {
+      const auto* p = static_cast<const int*>(A->p);
+      return std::pair{std::span<const int>(p, A->ncol + 1),
+                       std::span<const int>(static_cast<const int*>(A->i),
+                                            static_cast<std::size_t>(p[A->ncol]))};
+    };
+    const bool same = F.K && F.L && F.K->ncol == K->ncol &&
+                      std::ranges::equal(pattern(F.K).first, pattern(K).first) &&
+                      std::ranges::equal(pattern(F.K).second, pattern(K).second);
+    cholmod_free_sparse(&F.K, &F.c);
+    F.K = K;
+    if (!same) {
+      cholmod_free_factor(&F.L, &F.c);
+      F.L = cholmod_analyze(K, &F.c);
+      check(F.c, "ordering the matrix");
+      F.fill = static_cast<long>(F.c.lnz);
     }
-    F.entries = K.nonZeros();
+    F.entries = pattern(K).second.size();
     Outcome outcome = Outcome::TooLarge;
     if (static_cast<double>(F.fill) <= maxFill * static_cast<double>(F.entries)) {
-      F.ldlt.factorize(K);
-      const bool ok =
-          F.ldlt.info() == Eigen::Success && unknowns > 0 && F.ldlt.vectorD().minCoeff() > 0;
+      cholmod_factorize(K, F.L, &F.c);
+      check(F.c, "factorising the matrix");
+      // LDLᵀ: D is each column's first entry of the simplicial factor.
+      bool ok = F.c.status == CHOLMOD_OK && F.L->minor == F.L->n && unknowns > 0;
+      const auto* Lp = static_cast<const int*>(F.L->p);
+      const auto* Lx = static_cast<const double*>(F.L->x);
+      for (long j = 0; ok && j < unknowns; ++j) ok = Lx[Lp[j]] > 0;
       outcome = ok ? Outcome::Factorised : Outcome::NotDefinite;
     }
     reply.push_back(static_cast<char>(outcome));
@@ -167,22 +212,32 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
   return outcome;
 }
 
-void StiffnessMatrix::solve(Context& ctx, std::span<const double> b, std::span<double> x) const {
+double StiffnessMatrix::solve(Context& ctx, std::span<const double> b, std::span<double> x) const {
   std::vector<char> mine;
   append(mine, b.data(), values_);
   std::vector<std::size_t> starts;
   const std::vector<char> all = ctx.gather(mine, starts);
   std::vector<char> reply;
   if (ctx.root()) {
-    const Factor& F = *factor_;
+    Factor& F = *factor_;
     if (all.size() != F.total * sizeof(double))
       throw std::logic_error("stiffness matrix: the particles changed since the factorisation");
     std::vector<double> rhs(F.total);
     std::memcpy(rhs.data(), all.data(), all.size());
-    Eigen::VectorXd r(F.unknowns);
+    if (!F.rhs || F.rhs->nrow != static_cast<std::size_t>(F.unknowns)) {
+      cholmod_free_dense(&F.rhs, &F.c);
+      F.rhs = cholmod_zeros(static_cast<std::size_t>(F.unknowns), 1, CHOLMOD_REAL, &F.c);
+      check(F.c, "allocating a right-hand side");
+    }
+    auto* r = static_cast<double*>(F.rhs->x);
     for (std::size_t k = 0; k < F.total; ++k)
       if (F.row[k] >= 0) r[F.row[k]] = rhs[k];
-    const Eigen::VectorXd s = F.ldlt.solve(r);
+    cholmod_solve2(CHOLMOD_A, F.L, F.rhs, nullptr, &F.x, nullptr, &F.y, &F.e, &F.c);
+    check(F.c, "solving");
+    const auto* s = static_cast<const double*>(F.x->x);
+    double bx = 0;  // in the order of the unknowns: the same on any number of ranks
+    for (long u = 0; u < F.unknowns; ++u) bx += r[u] * s[u];
+    append(reply, &bx, 1);
     std::vector<double> out(F.total, 0.0);
     for (std::size_t k = 0; k < F.total; ++k)
       if (F.row[k] >= 0) out[F.out[k]] = s[F.row[k]];
@@ -192,7 +247,8 @@ void StiffnessMatrix::solve(Context& ctx, std::span<const double> b, std::span<d
   std::vector<double> s(reply.size() / sizeof(double));
   std::memcpy(s.data(), reply.data(), s.size() * sizeof(double));
   for (std::size_t i = 0; i < at_.size(); ++i)
-    for (int d = 0; d < dofs_; ++d) x[i * dofs_ + d] = s[at_[i] * dofs_ + d];
+    for (int d = 0; d < dofs_; ++d) x[i * dofs_ + d] = s[1 + at_[i] * dofs_ + d];
+  return s[0];
 }
 
 }  // namespace pdq

@@ -1,11 +1,11 @@
 #pragma once
 // The quasi-static solver's assembled stiffness (docs/quasi-static.md, "Assembled
 // stiffness"): entries K_ij of the free degrees of freedom, probed by finite differences on
-// every rank, gathered on rank 0, made symmetric and factorised there (sparse LDLᵀ with an
-// approximate-minimum-degree ordering, Eigen), and solves with it: a right-hand side given
-// per owned DOF on every rank, the solution sent back to each. Rows and columns are
-// ordered by global ID, so the matrix, its factors and every solution are the same bits on
-// any number of ranks.
+// every rank, gathered on rank 0, made symmetric and factorised there (CHOLMOD's sparse
+// LDLᵀ, its ordering by minimum degree or nested dissection), and solves with it: a right-hand side
+// given per owned DOF on every rank, the solution sent back to each. Rows and columns are ordered
+// by global ID, so the matrix, its factors and every solution are the same bits on any number of
+// ranks.
 #include <memory>
 #include <span>
 #include <vector>
@@ -42,8 +42,8 @@ class StiffnessMatrix {
                     std::span<const unsigned char> free, const std::vector<Entry>& entries,
                     std::span<const double> fallback, double shift, double maxFill);
   // Collective: x = K̂⁻¹ b over the owned DOFs (b and x: `dofs` per owned particle; the
-  // DOFs that are not free get 0).
-  void solve(Context& ctx, std::span<const double> b, std::span<double> x) const;
+  // DOFs that are not free get 0). Returns bᵀx (the same bits on every rank).
+  double solve(Context& ctx, std::span<const double> b, std::span<double> x) const;
   // The free DOFs, K̂'s stored entries (its lower half) and its factor's (rank 0; 0
   // elsewhere).
   long unknowns() const;
