@@ -221,6 +221,8 @@ class Integrator {
     // growing as the structure softens towards a peak (0: not measured; measured for the
     // modified Newton iteration only, whose work shrinks with the increment).
     double softening = 0;
+    // With the assembled stiffness, the iteration at which it took up momentum (-1: never).
+    long momentumFrom = -1;
   };
   Relaxed relax(Context& ctx, const Solver& solver, const std::string& source, double factor,
                 double previous, const std::function<void()>& forces,

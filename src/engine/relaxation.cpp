@@ -647,9 +647,10 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     bool rest = false;
     if (newton) {
       const double fk = matrix_->solve(ctx, acc, step);  // F·K̂⁻¹F
-      if (!accelerated && it > 0 && out.residual > kNewtonContraction * lastResidual)
+      if (!accelerated && it > 0 && out.residual > kNewtonContraction * lastResidual) {
         accelerated = rest = true;
-      else if (accelerated)  // the kinetic energy ½vᵀK̂v changes by F·v + ½F·K̂⁻¹F
+        out.momentumFrom = it;
+      } else if (accelerated)  // the kinetic energy ½vᵀK̂v changes by F·v + ½F·K̂⁻¹F
         rest = sums[kPower].value() + fk / 2 < 0;
       lastResidual = out.residual;
     } else {

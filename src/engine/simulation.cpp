@@ -497,8 +497,10 @@ bool Simulation::relaxLoadStep() {
   last_ = {path.progress / full, factor, r.load, r.displacement, relative, r.iterations, broken};
   if (comm_.root()) {
     ctx_->log() << "load step " << step_ << ": load factor " << factor << ", " << r.iterations
-                << " iterations, residual " << r.residual << " (" << relative
-                << " of the applied load), " << broken << " broken interactions\n";
+                << " iterations";
+    if (r.momentumFrom >= 0) ctx_->log() << " (momentum from iteration " << r.momentumFrom << ")";
+    ctx_->log() << ", residual " << r.residual << " (" << relative << " of the applied load), "
+                << broken << " broken interactions\n";
     if (loadSteps_.empty())
       loadSteps_ =
           "load_step,load_factor,iterations,residual,reference,relative,load,displacement,"

@@ -444,6 +444,15 @@ TEST(QuasiStatic, AssembledStiffnessTakesUpMomentumInACrackingLoadStep) {
     EXPECT_LE(rows[2][5], tol);
     EXPECT_GT(rows[2][8], 0) << "the last load step should break interactions";
     last.push_back(rows[2]);
+    if (comm.root()) {  // the log says when the cracking load step took up momentum
+      std::ifstream log(dir + "/debug.txt");
+      std::string line, third;
+      while (std::getline(log, line))
+        if (line.rfind("load step 3:", 0) == 0) third = line;
+      EXPECT_EQ(third.find("(momentum from iteration ") != std::string::npos,
+                masses == Solver::Masses::Assembled)
+          << third;
+    }
     if (comm.root())
       std::printf("cracking load step (%s): %g iterations, %g broken interactions\n", dir.c_str(),
                   rows[2][2], rows[2][8]);
