@@ -114,6 +114,11 @@ class Simulation {
     double beyond = 0;  // the smallest load factor tried beyond it that found no equilibrium
   };
   const LoadStep& lastLoadStep() const { return last_; }
+  // Quasi-static: when the load path reaches load_scale with every load step in
+  // equilibrium, `more` is asked (on every rank, collectively) whether to go on; if it says
+  // so the run goes on towards twice the load, its increments doubled with it, instead of
+  // ending.
+  void setRaise(std::function<bool()> more) { raise_ = std::move(more); }
 
  private:
   Domain makeDomain() const;
@@ -174,6 +179,7 @@ class Simulation {
   static constexpr double kGrowth = 1.5;
   static constexpr int kGrowthSteps = 3;
   std::function<int()> stopCheck_;
+  std::function<bool()> raise_;
   int stopCode_ = 0;
   bool setUp_ = false, ended_ = false, resumed_ = false;
   std::string loadSteps_;  // quasi_static.csv so far (rank 0)

@@ -290,12 +290,13 @@ namespace {
 // (about 1000 particles) still gain from a second rank (docs/quasi-static.md, "Ranks").
 constexpr std::size_t kParticlesPerRank = 400;
 
-// A quasi-static run that holds up to `hi` is run again towards twice as far, as the
-// bisection widens its bracket, at most this many times.
+// A quasi-static run that holds up to `hi` goes on towards twice as far, as the bisection
+// widens its bracket, at most this many times.
 constexpr int kRaises = 4;
 
-// The quasi-static run itself, on the ranks of `comm`: trial `index`.
-Result staticRun(const Case& c, double hi, int index, Comm& comm, const StaticOptions& opt) {
+// The quasi-static run itself, on the ranks of `comm`: one trial per load it held up to
+// before going on (1, 2, ...), then the last.
+Result staticRun(const Case& c, double hi, Comm& comm, const StaticOptions& opt) {
   RunConfig run = c.run;
   run.procs = {0, 0, 0};
   run.loading = {};
@@ -309,40 +310,54 @@ Result staticRun(const Case& c, double hi, int index, Comm& comm, const StaticOp
   run.solver.peakTolerance = opt.peakTolerance;
   run.solver.masses = opt.masses;
   run.steps = opt.loadSteps;
-  Trial tr;
-  tr.index = index;
-  tr.dir = opt.outDir.empty() ? "" : opt.outDir + "/quasi_static";
-  run.outDir = tr.dir.empty() ? "." : tr.dir;
+  const std::string dir = opt.outDir.empty() ? "" : opt.outDir + "/quasi_static";
+  run.outDir = dir.empty() ? "." : dir;
   auto simPtr = simulation(c, c.params, run, comm);
   Simulation& sim = *simPtr;
   const StrengthSpec spec = sim.model().strengthSpec();
   if (spec.load.empty() || spec.displacement.empty() || !spec.failureMode)
     throw InputError(c.source, 0, "model " + c.model + " declares no strength spec");
-  if (!tr.dir.empty()) {
+  if (!dir.empty()) {
     OutputSettings out;  // the load–displacement history and the state at the peak
     out.globalsEvery = 1;
     addStandardOutputs(sim, out);
   }
+  Result r;
+  // The state as a trial (collective: the globals and the failure mode).
+  auto trial = [&] {
+    Trial tr;
+    tr.index = static_cast<int>(r.trials.size()) + 1;
+    tr.dir = dir;
+    const auto names = sim.model().globals();
+    const auto values = sim.model().globalValues(sim.context());
+    const auto uAt = positions(c, names, spec.displacement);
+    double u = std::fabs(values[uAt[0]]);
+    for (std::size_t k = 1; k < uAt.size(); ++k) u = std::hypot(u, values[uAt[k]]);
+    tr.uHold = tr.uMid = tr.uEnd = u;
+    tr.brokenMid = tr.brokenEnd = values[positions(c, names, {spec.damage})[0]];
+    tr.steps = sim.step();
+    tr.mode = spec.failureMode(sim.context());
+    return tr;
+  };
+  sim.setRaise([&] {
+    if (static_cast<int>(r.trials.size()) == kRaises) return false;
+    Trial held = trial();
+    held.holds = true;
+    held.load = sim.lastLoadStep().factor * c.unitLoad;
+    r.trials.push_back(std::move(held));
+    return true;
+  });
   while (sim.advance()) {
   }
-  const auto names = sim.model().globals();
-  const auto values = sim.model().globalValues(sim.context());
-  const auto uAt = positions(c, names, spec.displacement);
-  double u = std::fabs(values[uAt[0]]);
-  for (std::size_t k = 1; k < uAt.size(); ++k) u = std::hypot(u, values[uAt[k]]);
-  tr.uHold = tr.uMid = tr.uEnd = u;
-  tr.brokenMid = tr.brokenEnd = values[positions(c, names, {spec.damage})[0]];
-  tr.steps = sim.step();
-  tr.mode = spec.failureMode(sim.context());
-  if (!tr.dir.empty()) sim.finish();
+  Trial tr = trial();
+  if (!dir.empty()) sim.finish();
   const Simulation::LoadStep& last = sim.lastLoadStep();
-  Result r;
   r.lower = last.factor * c.unitLoad;
   r.upper = last.beyond > 0 ? last.beyond * c.unitLoad : -1;
   r.mode = tr.mode;
   tr.holds = r.upper < 0;
   tr.load = tr.holds ? r.lower : r.upper;
-  r.trials = {tr};
+  r.trials.push_back(std::move(tr));
   return r;
 }
 
@@ -357,12 +372,7 @@ Result staticStrength(const Case& c, double hi, Comm& comm, const StaticOptions&
   Result r;
   std::vector<char> message;
   if (comm.rank() < ranks) {
-    for (int k = 0;; ++k, hi *= 2) {  // a run again replaces the held run's outputs
-      const Result run = staticRun(c, hi, k + 1, group, opt);
-      r.lower = run.lower, r.upper = run.upper, r.mode = run.mode;
-      r.trials.push_back(run.trials[0]);
-      if (r.upper >= 0 || k == kRaises) break;
-    }
+    r = staticRun(c, hi, group, opt);
     if (comm.root()) {
       const double bounds[2] = {r.lower, r.upper};
       const char* p = reinterpret_cast<const char*>(bounds);

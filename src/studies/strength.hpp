@@ -86,9 +86,9 @@ Result findStrength(const Case& c, double lo, double hi, Comm& comm, const Optio
 // raises the loads towards `hi` in load steps, cut back where they find no equilibrium, until
 // even the smallest step finds none. The result brackets the peak between the last load in
 // equilibrium (`lower`) and the smallest beyond it that found none (`upper`; -1 if even 16
-// × `hi` was reached). A run that holds up to `hi` is run again towards twice as far (as the
-// bisection widens its bracket); each run is a trial, the last one's outputs (the curve and
-// the state at the peak) in outDir/quasi_static.
+// × `hi` was reached). A run that holds up to `hi` goes on towards twice as far (as the
+// bisection widens its bracket); each load it held up to before going on is a trial, and
+// its end another, its outputs (the curve and the state at the peak) in outDir/quasi_static.
 struct StaticOptions {
   double tolerance = 1e-4;
   long loadSteps = 10, maxIterations = 50000, maxBroken = 0;

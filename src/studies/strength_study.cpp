@@ -128,7 +128,7 @@ void strengthStudy(const Scenario& sc, const Params& o, Comm& comm, bool resume,
   };
   if (oneRun && comm.root())
     std::printf(
-        "quasi-static: one run towards %.6g %s in %ld load steps (again towards twice "
+        "quasi-static: one run towards %.6g %s in %ld load steps (going on towards twice "
         "as far while it holds)\n",
         hi, ref.unit.c_str(), so.loadSteps);
   const strength::Result st = oneRun ? strength::staticStrength(c, hi, comm, so)

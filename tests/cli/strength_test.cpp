@@ -100,8 +100,8 @@ TEST(CliStrength, QuasiStaticSameOnAnyNumberOfRanks) {
   }
 }
 
-// A quasi-static run that holds up to hi is run again towards twice hi, as the bisection
-// widens its bracket: the plate (about 3 MPa) holds to hi = 1.6 MPa, then fails below 3.2.
+// A quasi-static run that holds up to hi goes on towards twice hi, as the bisection widens
+// its bracket: the plate (about 3 MPa) holds to hi = 1.6 MPa, then fails below 3.2.
 TEST(CliStrength, QuasiStaticRaisesHiWhileTheMemberHolds) {
   const std::string dir = freshDir("strength_qs_raise");
   const auto r = runPdq(
@@ -118,8 +118,8 @@ TEST(CliStrength, QuasiStaticRaisesHiWhileTheMemberHolds) {
   const std::string csv = readFile(dir + "/tension_x_out/strength/trials.csv");
   EXPECT_EQ(lines(csv), 3) << csv;  // header, the run that held to 1.6 MPa, the one that failed
   EXPECT_THAT(r.out, HasSubstr("1.6  holds"));
-  // The outputs are the second run's alone: one final state, the one the report names (the
-  // held run's, at another step, removed as stale when the second began).
+  // One run: one final state, the one the report names; the load path went on past 1.6 MPa
+  // (its log says so) instead of starting again.
   const std::string qs = dir + "/tension_x_out/strength/quasi_static";
   std::string state;
   for (const auto& f : filesUnder(qs))
@@ -128,6 +128,8 @@ TEST(CliStrength, QuasiStaticRaisesHiWhileTheMemberHolds) {
       state = f;
     }
   EXPECT_THAT(r.out, HasSubstr("quasi_static/" + state + ")"));
+  EXPECT_THAT(readFile(qs + "/debug.txt"),
+              HasSubstr("load path raised after load step 10: towards 3.2"));
 }
 
 TEST(CliStrength, BadOptionsAreRefusedByName) {
