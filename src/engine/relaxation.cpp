@@ -578,9 +578,10 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     }
     forces();
     // One pass and one global sum: the out-of-balance forces of the free DOFs; the reactions
-    // of the held ones (and of a resting DOF its support pushes); twice the kinetic energy of
-    // the undamped step and of a step from rest (kinetic damping); every kRunawayEvery
-    // iterations the work of the loads on the displacements (the runaway look).
+    // of the held ones (and of a resting DOF its support pushes); for kinetic damping, twice
+    // the kinetic energy of the undamped step and of a step from rest (diagonal masses) or
+    // the power F·v (the assembled stiffness); every kRunawayEvery iterations the work of the
+    // loads on the displacements (the runaway look).
     const bool look = !control.active() && lastAlong != 0 && it % kRunawayEvery == 0;
     enum { kResidual, kReaction, kMoving, kStill, kWork, kPower, kSums };
     std::array<ExactSum, kSums> sums;
@@ -591,13 +592,13 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
         const double f = dofForce(P, i, d, factor), w = weight(i, d);
         if (free[k] && !(onSupport(i, d) && f < 0)) {
           r2 += f * f * w;
-          power += f * v[k];
+          if (newton) power += f * v[k];
           acc[k] = newton ? f : f / lambda[k];
         } else {
           R2 += f * f * w;
           acc[k] = 0;
         }
-        if (free[k] && !newton) {  // kinetic damping's energies: none for Newton steps
+        if (free[k] && !newton) {
           const double u = v[k] + acc[k];
           e += lambda[k] * u * u;
           e0 += lambda[k] * acc[k] * acc[k] / 4;
@@ -606,10 +607,13 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       }
       sums[kResidual].add(r2);
       sums[kReaction].add(R2);
-      sums[kMoving].add(e);
-      sums[kStill].add(e0);
       sums[kWork].add(work);
-      sums[kPower].add(power);
+      if (newton) {
+        sums[kPower].add(power);
+      } else {
+        sums[kMoving].add(e);
+        sums[kStill].add(e0);
+      }
     }
     ctx.sums(sums);
     const double rr = sums[kResidual].value(), reaction = sums[kReaction].value();

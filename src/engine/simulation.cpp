@@ -512,16 +512,18 @@ bool Simulation::relaxLoadStep() {
     loadSteps_ += row.str();
     writeFileAtomically(cfg_.outDir + "/quasi_static.csv", loadSteps_);
   }
-  if (path.progress >= full && raise_ && raise_()) {
-    // The same load factors, each load step's share of twice the load halved.
-    cfg_.loading.scale *= 2;
-    path.progress /= 2;
-    if (comm_.root())
-      ctx_->log() << "load path raised after load step " << step_ << ": towards "
-                  << staticFactor(full) << "\n";
-  } else if (path.progress >= full) {
-    cfg_.steps = step_;
-    ctx_->setSteps(step_);
+  if (path.progress >= full) {
+    if (raise_ && raise_()) {
+      // The same load factors, each load step's share of twice the load halved.
+      cfg_.loading.scale *= 2;
+      path.progress /= 2;
+      if (comm_.root())
+        ctx_->log() << "load path raised after load step " << step_ << ": towards "
+                    << staticFactor(full) << "\n";
+    } else {
+      cfg_.steps = step_;
+      ctx_->setSteps(step_);
+    }
   }
   // A stop asked for from outside ends the run at this load step, and a timed output
   // (checkpoints every T minutes) is written at it, as at a time step: the ranks agree in
