@@ -82,8 +82,12 @@ constexpr double kAssembledShift = 1e-12;
 // The assembled stiffness is used while its factor holds at most this many times the
 // matrix's own stored entries, so that a solve costs about a force evaluation: 2D lattices
 // stay below it; 3D ones fill in more and relax with the Gershgorin masses
-// (docs/quasi-static.md, "Assembled stiffness").
+// (docs/quasi-static.md, "Assembled stiffness")...
 constexpr double kMaxFill = 8;
+// ... but for the first load step, which relaxes every mode from rest (the lowest take the
+// most iterations of the run), a factor of up to this many times is worth its one
+// factorisation.
+constexpr double kMaxFirstFill = 16;
 // The assembled stiffness's iteration takes up momentum once a modified Newton step leaves
 // more than this share of the last out-of-balance force.
 constexpr double kNewtonContraction = 0.8;
@@ -510,6 +514,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     }
   // The assembled stiffness, factorised with the rows it was probed with; a load step whose
   // matrix is not positive definite (a mechanism) relaxes with the diagonal masses.
+  bool firstOnly = false;  // the assembled stiffness for the first load step alone
   if (assembled_ && probed) {
     factorised_ = false;
     const bool any = ctx.any(!entries.empty());
@@ -520,6 +525,10 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
       std::vector<Gid> gids(n);
       for (std::size_t i = 0; i < n; ++i) gids[i] = P.gid(i);
       outcome = m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxFill);
+      if (first && outcome == StiffnessMatrix::Outcome::TooLarge) {
+        outcome = m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxFirstFill);
+        firstOnly = outcome != StiffnessMatrix::Outcome::TooLarge;
+      }
       if (ctx.root())
         ctx.log() << "quasi-static: assembled stiffness, " << m.unknowns() << " unknowns, "
                   << m.matrixNonzeros() << " stored entries, " << m.factorNonzeros()
@@ -530,6 +539,10 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
                           : "\n");
     }
     factorised_ = outcome == StiffnessMatrix::Outcome::Factorised;
+    if (firstOnly && ctx.root())
+      ctx.log() << "quasi-static: the factor fills in over " << kMaxFill
+                << " times the matrix: the first load step by the assembled stiffness, the "
+                   "later ones with the Gershgorin masses\n";
     if (first && outcome == StiffnessMatrix::Outcome::TooLarge) {
       assembled_ = false;
       ctx.warn(any ? "quasi-static: masses = \"assembled\": the stiffness's factor would fill "
@@ -691,6 +704,10 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     exchange();
   }
   iterations_ += static_cast<double>(out.iterations);
+  if (firstOnly) {
+    assembled_ = factorised_ = false;
+    matrix_.reset();
+  }
   out.load = factor * loadTotal;
   out.displacement = alongLoads();
   if (out.converged && stepping && newton)
