@@ -524,11 +524,9 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     if (any) {
       std::vector<Gid> gids(n);
       for (std::size_t i = 0; i < n; ++i) gids[i] = P.gid(i);
-      outcome = m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxFill);
-      if (first && outcome == StiffnessMatrix::Outcome::TooLarge) {
-        outcome = m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxFirstFill);
-        firstOnly = outcome != StiffnessMatrix::Outcome::TooLarge;
-      }
+      outcome = m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift,
+                            first ? kMaxFirstFill : kMaxFill);
+      firstOnly = outcome != StiffnessMatrix::Outcome::TooLarge && m.fillRatio() > kMaxFill;
       if (ctx.root())
         ctx.log() << "quasi-static: assembled stiffness, " << m.unknowns() << " unknowns, "
                   << m.matrixNonzeros() << " stored entries, " << m.factorNonzeros()
