@@ -319,23 +319,9 @@ class Mplm2d final : public Model {
     return pdq::highestFrequency(ctx, sys, restoring, par_.powerIterations);
   }
 
-  // Where the badly damaged (ω ≥ ½) concrete interactions are: mostly compressive →
-  // "compression"; without supports (a plate loaded at both ends) → "tension"; else a
-  // beam: "flexural" when most lie in the middle third between its supports, else "shear".
   std::string failureMode(Context& ctx) const {
     const Particles& P = ctx.particles;
-    double lo = std::numeric_limits<double>::max(), hi = -lo;
-    for (std::size_t i = 0; i < P.owned(); ++i)
-      if (in_.constraint[i] != 0) {
-        lo = std::min(lo, P.fixed(i)[FX_X]);
-        hi = std::max(hi, P.fixed(i)[FX_X]);
-      }
-    lo = ctx.min(lo);
-    hi = ctx.max(hi);
-    const bool supported = lo <= hi;
-    return mplm::failureMode(ctx, supported, [&](std::size_t i) {
-      return supported && std::fabs(P.fixed(i)[FX_X] - (lo + hi) / 2) < (hi - lo) / 6;
-    });
+    return mplm::failureMode(ctx, in_.constraint, [&](std::size_t i) { return &P.alter(i)[AX]; });
   }
 
   // cos θ and sin θ of every local particle (owned and ghosts), once per step.

@@ -674,37 +674,9 @@ class Mplm3d final : public Model {
     return pdq::highestFrequency(ctx, sys, restoring, par_.powerIterations);
   }
 
-  // How the member failed, from its interactions damaged past ω = 0.5: "compression" when
-  // crushing dominates; else, with supports at both ends, "flexural" when most lie in the
-  // middle third between them and "shear" otherwise; a member held at one end only (a
-  // cantilever) fails "flexural" when most lie within one depth of the support, else "shear";
-  // "tension" with no supports.
   std::string failureMode(Context& ctx) const {
     const Particles& P = ctx.particles;
-    constexpr double huge = std::numeric_limits<double>::max();
-    double lo = huge, hi = -huge, ylo = huge, yhi = -huge, xlo = huge, xhi = -huge;
-    for (std::size_t i = 0; i < P.owned(); ++i) {
-      const double* X = P.fixed(i);
-      xlo = std::min(xlo, X[FX_X]);
-      xhi = std::max(xhi, X[FX_X]);
-      ylo = std::min(ylo, X[FX_Y]);
-      yhi = std::max(yhi, X[FX_Y]);
-      if (in_.constraint[i] != 0) {
-        lo = std::min(lo, X[FX_X]);
-        hi = std::max(hi, X[FX_X]);
-      }
-    }
-    lo = ctx.min(lo);
-    hi = ctx.max(hi);
-    xlo = ctx.min(xlo);
-    xhi = ctx.max(xhi);
-    const double depth = ctx.max(yhi) - ctx.min(ylo);
-    const bool supported = lo <= hi, bothEnds = supported && hi - lo > (xhi - xlo) / 2;
-    return mplm::failureMode(ctx, supported, [&](std::size_t i) {
-      const double x = P.fixed(i)[FX_X];
-      return bothEnds ? std::fabs(x - (lo + hi) / 2) < (hi - lo) / 6
-                      : supported && std::min(std::fabs(x - lo), std::fabs(x - hi)) < depth;
-    });
+    return mplm::failureMode(ctx, in_.constraint, [&](std::size_t i) { return &P.alter(i)[AX]; });
   }
 
   // Virial stress of particle i from its elastic interactions (no damping), with the
