@@ -40,12 +40,25 @@ template <bool ForceShift, bool Energy>
   double* r2 = s.r2.data();
   std::uint32_t* jj = s.j.data();
   const double* xi = pos + i * stride;
-  const double rc2 = pair.rc2;
+  const double x = xi[0], y = xi[1], z = xi[2], rc2 = pair.rc2;
   // 1. Keep the pairs closer than rc: owned partners first, then ghosts.
-  static const KeepWithin keep = chosenKeepWithin();
-  const Kept into{dx, dy, dz, r2, jj};
-  const std::size_t owned = keep(pos, stride, lists.begin(i), lists.ghosts(i), xi, rc2, into, 0);
-  std::size_t m = keep(pos, stride, lists.ghosts(i), lists.end(i), xi, rc2, into, owned);
+  std::size_t m = 0;
+  auto keep = [&](const std::uint32_t* k, const std::uint32_t* last) {
+    for (; k != last; ++k) {
+      const double* xj = pos + std::size_t(*k) * stride;
+      const double ex = x - xj[0], ey = y - xj[1], ez = z - xj[2];
+      const double d2 = ex * ex + ey * ey + ez * ez;
+      dx[m] = ex;
+      dy[m] = ey;
+      dz[m] = ez;
+      r2[m] = d2;
+      jj[m] = *k;
+      m += d2 < rc2;
+    }
+  };
+  keep(lists.begin(i), lists.ghosts(i));
+  const std::size_t owned = m;
+  keep(lists.ghosts(i), lists.end(i));
   // Pad the last group with harmless pairs: zero separation vector (so zero force) at
   // distance rc (finite terms); their energies are masked below.
   const std::size_t kept = m;
@@ -110,28 +123,6 @@ template <bool ForceShift, bool Energy>
 }
 
 }  // namespace
-
-std::size_t keepWithin(const double* pos, std::size_t stride, const std::uint32_t* first,
-                       const std::uint32_t* last, const double* xi, double rc2, const Kept& out,
-                       std::size_t m) {
-  const double x = xi[0], y = xi[1], z = xi[2];
-  for (const std::uint32_t* k = first; k != last; ++k) {
-    const double* xj = pos + std::size_t(*k) * stride;
-    const double ex = x - xj[0], ey = y - xj[1], ez = z - xj[2];
-    const double d2 = ex * ex + ey * ey + ez * ez;
-    out.dx[m] = ex;
-    out.dy[m] = ey;
-    out.dz[m] = ez;
-    out.r2[m] = d2;
-    out.j[m] = *k;
-    m += d2 < rc2;
-  }
-  return m;
-}
-
-KeepWithin chosenKeepWithin() {
-  return __builtin_cpu_supports("x86-64-v4") ? keepWithinAvx512 : keepWithin;
-}
 
 // Compiled for several instruction sets, chosen at load time. The arithmetic is the same
 // IEEE operations on each (no FMA contraction), and the sums are exact anyway.

@@ -21,9 +21,8 @@
 // rank.
 //
 // Three passes per particle: the list's pairs closer than rc are kept without branches
-// (structure of arrays; eight at a time with AVX-512 where the processor has it); the pair
-// law is evaluated on them four at a time, vectorised; the owned partners receive their
-// terms (scalar scatter).
+// (structure of arrays); the pair law is evaluated on them four at a time, vectorised;
+// the owned partners receive their terms (scalar scatter).
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -58,7 +57,7 @@ struct KernelScratch {
   std::vector<double> t[10];  // split terms of the kept pairs: f (h, l) x 3, u (h, l), w (h, l)
   std::vector<std::uint32_t> j;
   void reserve(std::size_t n) {
-    const std::size_t m = n + 8;  // room for the filter's last group of eight
+    const std::size_t m = n + 4;  // room for the padding of the last group of four
     if (dx.size() >= m) return;
     dx.resize(m), dy.resize(m), dz.resize(m), r2.resize(m), j.resize(m);
     for (auto& v : t) v.resize(m);
@@ -74,28 +73,6 @@ struct KernelOut {
   double* energy = nullptr;  // kEnergyRow per owned particle, added to (null: forces only)
   double closest2 = 0;       // smallest r^2 of a kept pair, lowered
 };
-
-// The kernel's first pass: appends, from index m of `out`'s arrays, the separations
-// x_i - x_k (xi: particle i's position), squared distances and indices of the partners k in
-// [first, last) closer than sqrt(rc2); returns the new count. pos/stride: rows of
-// positions (x, y, z first) of the local particles. May write 8 entries past the kept ones.
-struct Kept {
-  double *dx, *dy, *dz, *r2;
-  std::uint32_t* j;
-};
-std::size_t keepWithin(const double* pos, std::size_t stride, const std::uint32_t* first,
-                       const std::uint32_t* last, const double* xi, double rc2, const Kept& out,
-                       std::size_t m);
-// The same in AVX-512 (avx512.cpp), for processors that have it (x86-64-v4): the same IEEE
-// operations, so the same bits.
-std::size_t keepWithinAvx512(const double* pos, std::size_t stride, const std::uint32_t* first,
-                             const std::uint32_t* last, const double* xi, double rc2,
-                             const Kept& out, std::size_t m);
-using KeepWithin = std::size_t (*)(const double*, std::size_t, const std::uint32_t*,
-                                   const std::uint32_t*, const double*, double, const Kept&,
-                                   std::size_t);
-// keepWithinAvx512 where the processor has AVX-512, else keepWithin.
-KeepWithin chosenKeepWithin();
 
 // Adds the terms of the pairs of owned particles [first, last) to `out`. pos/stride: rows
 // of positions (x, y, z first) of the local particles.
