@@ -91,7 +91,7 @@ inline double damagedInteractions(const Context& ctx, double threshold) {
 // counts as shear from a normal of 33.75°, a quarter of the way from 45° towards the vertical,
 // which leaves room for the scatter of a slice's estimate on a lattice (docs/mplm.md,
 // "Failure mode"). "flexural" when the other slices hold most of the opening, "shear"
-// otherwise: at the failing state the widest cracks decide.
+// otherwise: the widest cracks decide.
 // Slicing keeps the mirror-image diagonal cracks of the two shear spans from cancelling.
 // `current(i)` gives local particle i's current position.
 template <class Current>
