@@ -5,7 +5,7 @@
 // the laws of §4.3.2 shared with the 2D model, damped by eq. 4.21, reinforced by steel bars,
 // and moved by the engine's integrator (velocity Verlet; the orientation a unit quaternion,
 // Rotation::Spatial; loads and prescribed values follow the engine's load protocol).
-// The force loop's vectors of four doubles (interaction.hpp) are passed and returned only
+// The force loop's vectors of eight doubles (interaction.hpp) are passed and returned only
 // within this file (inlined), never across a library interface: GCC's note that their ABI
 // differs with and without AVX does not concern them.
 #pragma GCC diagnostic ignored "-Wpsabi"
@@ -505,15 +505,13 @@ class Mplm3d final : public Model {
   }
   // Interactions evaluated side by side, one per lane: lane-wise the scalar form's operations
   // in the same order (interaction.hpp), so the same bits.
-  using Wide = double __attribute__((vector_size(4 * sizeof(double))));
-  static constexpr int width = 4;
+  static constexpr int width = 8;
+  using Wide = double __attribute__((vector_size(width * sizeof(double))));
 
-  // The co-rotational loads of `count` evaluations, `width` at a time, delivered; with AVX2 where
-  // the processor has it (no FMA: the same roundings as without).
-  [[gnu::flatten, gnu::target_clones("avx2", "default")]] void corotLoads(const Particles& P,
-                                                                          Bonds& B,
-                                                                          const Lane* lanes,
-                                                                          std::size_t count) {
+  // The co-rotational loads of `count` evaluations, `width` at a time, delivered; with AVX-512
+  // or AVX2 where the processor has it (no FMA: the same roundings as without).
+  [[gnu::flatten, gnu::target_clones("arch=x86-64-v4", "avx2", "default")]] void corotLoads(
+      const Particles& P, Bonds& B, const Lane* lanes, std::size_t count) {
     for (std::size_t s = 0; s < count; s += width) {
       const Lane* ln[width];
       const double *ai[width], *aj[width], *Ri[width], *Rj[width];
@@ -528,7 +526,9 @@ class Mplm3d final : public Model {
         g[k] = &geo_[ln[k]->geo];
         t[k] = &types_[g[k]->type];
       }
-      auto wide = [](auto get) { return Wide{get(0), get(1), get(2), get(3)}; };
+      auto wide = [](auto get) {
+        return Wide{get(0), get(1), get(2), get(3), get(4), get(5), get(6), get(7)};
+      };
       Wide r[3], e2[3], e3[3], RiW[9], RjW[9];
       for (int c = 0; c < 3; ++c) {
         r[c] = wide([&](int k) { return aj[k][AX + c] - ai[k][AX + c]; });
