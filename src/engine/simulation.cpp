@@ -470,6 +470,10 @@ bool Simulation::relaxLoadStep() {
       what << "did not converge in " << integrator_->iterationCap(solver)
            << " iterations: the out-of-balance force is still " << relative
            << " of the applied load (tolerance " << solver.tolerance << ")";
+    if (abandoned_) {
+      exchange();
+      abandoned_();
+    }
     std::copy(positions.begin(), positions.end(), particles_.alter(0));
     bonds_.restore(bonds);
     if (r.runaway && !solver.control.active() &&

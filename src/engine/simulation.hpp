@@ -119,6 +119,10 @@ class Simulation {
   // so the run goes on towards twice the load, its increments doubled with it, instead of
   // ending.
   void setRaise(std::function<bool()> more) { raise_ = std::move(more); }
+  // Quasi-static: `seen` is called (on every rank, collectively) with the state of each load
+  // step that found no equilibrium in place — the tries beyond the peak among them — before
+  // the last equilibrium is put back; the ghosts are up to date.
+  void setAbandoned(std::function<void()> seen) { abandoned_ = std::move(seen); }
 
  private:
   Domain makeDomain() const;
@@ -180,6 +184,7 @@ class Simulation {
   static constexpr int kGrowthSteps = 3;
   std::function<int()> stopCheck_;
   std::function<bool()> raise_;
+  std::function<void()> abandoned_;
   int stopCode_ = 0;
   bool setUp_ = false, ended_ = false, resumed_ = false;
   std::string loadSteps_;  // quasi_static.csv so far (rank 0)

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <cstring>
 #include <memory>
+#include <optional>
 #include <type_traits>
 
 #include "engine/error.hpp"
@@ -347,13 +348,17 @@ Result staticRun(const Case& c, double hi, Comm& comm, const StaticOptions& opt)
     r.trials.push_back(std::move(held));
     return true;
   });
+  // The last load step that found no equilibrium: past the peak, how the member fails.
+  std::optional<Trial> failing;
+  sim.setAbandoned([&] { failing = trial(); });
   while (sim.advance()) {
   }
-  Trial tr = trial();
-  if (!dir.empty()) sim.finish();
   const Simulation::LoadStep& last = sim.lastLoadStep();
   r.lower = last.factor * c.unitLoad;
   r.upper = last.beyond > 0 ? last.beyond * c.unitLoad : -1;
+  Trial tr = r.upper > 0 && failing ? *failing : trial();
+  tr.index = static_cast<int>(r.trials.size()) + 1;
+  if (!dir.empty()) sim.finish();
   r.mode = tr.mode;
   tr.holds = r.upper < 0;
   tr.load = tr.holds ? r.lower : r.upper;
