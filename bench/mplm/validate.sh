@@ -5,8 +5,8 @@
 # bisection (two trials at a time), each on the same ranks, with their wall and CPU times.
 # Printed as a Markdown table: the thesis's MPLM strength, the ACI 318 / classical value,
 # pdq's quasi-static and dynamic brackets, quasi-static / thesis, the failure mode (of the
-# dynamic failing trial when it ran, else of the quasi-static peak) and the times. The
-# dynamic bisection's lowest failing trial of each is drawn by `pdq post picture` into
+# dynamic failing trial when it ran, else of the quasi-static try beyond the peak) and the
+# times. The dynamic bisection's lowest failing trial of each is drawn by `pdq post picture` into
 # docs/mplm/<example>.png: the damage at failure. Reports and logs stay in the work folder
 # printed at the end.
 # Usage: bench/mplm/validate.sh [build-dir] [ranks] [examples...]
