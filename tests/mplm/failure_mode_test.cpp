@@ -25,7 +25,7 @@
 namespace pdq::mplm {
 namespace {
 
-// A beam on two supports, 1.2 x 0.3 m in elevation (2D, s = 2 cm) or 1.2 x 0.3 x 0.12 m (3D,
+// A beam on two supports, 1.2 x 0.3 m in elevation (2D, s = 2 cm) or 1.2 x 0.32 x 0.12 m (3D,
 // s = 4 cm), one bar near the bottom.
 std::string member(bool threeD) {
   if (threeD)
