@@ -38,13 +38,22 @@ inline Vec rotate(const Quat& q, const Vec& v) {
 
 // A rotation as a row-major 3 × 3 matrix: formed once, it turns a vector in nine products.
 using Mat = std::array<double, 9>;
-// R(q) of a unit quaternion: I + 2w [u]× + 2 [u]×² (rotate()'s terms).
+// R(q) of a unit quaternion (w, x, y, z): I + 2w [u]× + 2 [u]×² (rotate()'s terms), row by
+// row into R. T is a double or a vector of doubles (GCC's vector extension), one
+// quaternion per lane, each lane the same operations as a double.
+template <class T>
+inline void rotationEntries(T w, T x, T y, T z, T R[9]) {
+  const T xx = x * x, yy = y * y, zz = z * z;
+  const T xy = x * y, xz = x * z, yz = y * z;
+  const T wx = w * x, wy = w * y, wz = w * z;
+  R[0] = 1 - 2 * (yy + zz), R[1] = 2 * (xy - wz), R[2] = 2 * (xz + wy);
+  R[3] = 2 * (xy + wz), R[4] = 1 - 2 * (xx + zz), R[5] = 2 * (yz - wx);
+  R[6] = 2 * (xz - wy), R[7] = 2 * (yz + wx), R[8] = 1 - 2 * (xx + yy);
+}
 inline Mat rotationMatrix(const Quat& q) {
-  const double xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
-  const double xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
-  const double wx = q.w * q.x, wy = q.w * q.y, wz = q.w * q.z;
-  return {1 - 2 * (yy + zz), 2 * (xy - wz), 2 * (xz + wy), 2 * (xy + wz),    1 - 2 * (xx + zz),
-          2 * (yz - wx),     2 * (xz - wy), 2 * (yz + wx), 1 - 2 * (xx + yy)};
+  Mat R;
+  rotationEntries(q.w, q.x, q.y, q.z, R.data());
+  return R;
 }
 inline Vec apply(const Mat& R, const Vec& v) {
   return {R[0] * v[0] + R[1] * v[1] + R[2] * v[2], R[3] * v[0] + R[4] * v[1] + R[5] * v[2],
