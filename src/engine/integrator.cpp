@@ -266,12 +266,16 @@ void Integrator::ensureBodies(Context& ctx) {
 void Integrator::indexFreeBodies() {
   const std::size_t n = bodies_.size();
   freeInverseMass_.assign(n, 0.0);
-  if (rotation_ != Rotation::None) return;
+  freeInverseInertia_.assign(rotation_ == Rotation::Planar ? n : 0, 0.0);
+  if (rotation_ == Rotation::Spatial) return;
+  const int nLinear = nT_ + (rotation_ == Rotation::Planar ? 1 : 0);
   for (std::size_t i = 0; i < n; ++i) {
     const Body& b = bodies_[i];
     bool free = true;
-    for (int d = 0; d < nT_; ++d) free &= b.constraint[d] == Constraint::Free && b.load[d] == 0;
-    if (free) freeInverseMass_[i] = 1 / b.mass;
+    for (int d = 0; d < nLinear; ++d) free &= b.constraint[d] == Constraint::Free && b.load[d] == 0;
+    if (!free) continue;
+    freeInverseMass_[i] = 1 / b.mass;
+    if (rotation_ == Rotation::Planar) freeInverseInertia_[i] = 1 / b.inertia;
   }
 }
 
@@ -445,6 +449,13 @@ template <bool kMove>
       const double s = a[v] * h;
       moved += s * s;
     }
+  }
+  if (rotation_ == Rotation::Planar) {  // the angle: advance's (M + load fNow) / I
+    const int p = pos_[nT_], v = vel_[nT_];
+    double acc = (F[frc_[nT_]] + zero) * freeInverseInertia_[i];
+    acc -= c * a[v];
+    a[v] += acc * kick;
+    a[p] += a[v] * h;
   }
   return moved;
 }

@@ -265,8 +265,8 @@ class Integrator {
   template <bool kMove>
   double advance(Particles& P, std::size_t i, double h, double kick, double fNow, double fNext,
                  double c) const;
-  // The same for a particle of freeInverseMass_ (free, unloaded, no rotation); zero is
-  // 0 × fNow, the unloaded force's term, so that the bits are advance's.
+  // The same for a particle of freeInverseMass_ (free and unloaded, no spatial rotation);
+  // zero is 0 × fNow, the unloaded force's term, so that the bits are advance's.
   template <bool kMove>
   double advanceFree(Particles& P, std::size_t i, double h, double kick, double zero,
                      double c) const;
@@ -288,9 +288,10 @@ class Integrator {
   std::array<int, 6> pos_{}, vel_{}, frc_{};  // per DOF (a planar angle is a position)
   std::array<int, 4> quat_{};                 // orientation columns
   std::vector<Body> bodies_;
-  // Per owned particle, 1 / mass when every DOF is free and unloaded and there are no
-  // rotations (the step then reads 8 bytes of it, not its whole Body), else 0.
-  std::vector<double> freeInverseMass_;
+  // Per owned particle, 1 / mass when every DOF is free and unloaded and rotations are
+  // none or planar (the step then reads 8 or 16 bytes of it, not its whole Body), else 0;
+  // with planar rotations, 1 / inertia beside it.
+  std::vector<double> freeInverseMass_, freeInverseInertia_;
   Watch* watch_ = nullptr;
   // Whether any of n values is not finite: a vectorised sweep (AVX2 when the CPU has it).
   bool (*anyNotFinite_)(const double*, std::size_t) = nullptr;
