@@ -167,11 +167,12 @@ class Mplm3d final : public Model {
   void force(Context& ctx) override {
     Particles& P = ctx.particles;
     Bonds& B = ctx.bonds;
-    orientations(P);
-    if (corot_)
-      evaluate<true>(P, B);
-    else
+    if (corot_) {
+      evaluate<true>(P, B);  // forms the rotation matrices in its lanes
+    } else {
+      orientations(P);
       evaluate<false>(P, B);
+    }
   }
 
  private:
@@ -432,7 +433,7 @@ class Mplm3d final : public Model {
   }
 
   // The elastic load of interaction k (as particle i holds it) on i; the rotation
-  // matrices or vectors come from orientations().
+  // matrices or vectors come from orientations(), which the caller runs first.
   EndLoad load(const Particles& P, const Interaction& k, std::size_t i, std::size_t j,
                double* state, bool update) const {
     return elasticForce(k, types_[k.type], chord(P, k, i, j), par_.law, state, update);
@@ -627,7 +628,8 @@ class Mplm3d final : public Model {
   static Quat orientation(const double* a) { return {a[QW], a[QX], a[QY], a[QZ]}; }
 
   // Each local particle's (owned and ghosts) rotation matrix in the co-rotational form, its
-  // rotation vector θ = log q in the small form: once per evaluation of the lattice.
+  // rotation vector θ = log q in the small form: before the scalar uses of chord() (the
+  // potential, the stresses) and the small form's force loop.
   void orientations(const Particles& P) const {
     const long nl = static_cast<long>(P.local());
     if (corot_) {
