@@ -81,12 +81,13 @@ constexpr double kFirstStepsPerCap = 10;
 constexpr double kAssembledShift = 1e-12;
 // The assembled stiffness is used while its factor holds at most this many times the
 // matrix's own stored entries, so that a solve costs about a force evaluation: 2D lattices
-// stay below it; 3D ones fill in more and relax with the Gershgorin masses
+// stay below it; 3D ones fill in more and relax with the Gershgorin masses once they crack
 // (docs/quasi-static.md, "Assembled stiffness")...
 constexpr double kMaxFill = 8;
-// ... but for the first load step, which relaxes every mode from rest (the lowest take the
-// most iterations of the run), a factor of up to this many times is worth its one
-// factorisation.
+// ... but while modified Newton steps alone converge (nothing cracks), a factor of up to
+// this many times is worth its factorisations: the first load step relaxes every mode from
+// rest (the lowest take the most iterations of the run), and the later ones' predictor is
+// not exact where the concrete softens before it cracks.
 constexpr double kMaxFirstFill = 16;
 // The assembled stiffness's iteration takes up momentum once a modified Newton step leaves
 // more than this share of the last out-of-balance force.
@@ -514,7 +515,6 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     }
   // The assembled stiffness, factorised with the rows it was probed with; a load step whose
   // matrix is not positive definite (a mechanism) relaxes with the diagonal masses.
-  bool firstOnly = false;  // the assembled stiffness for the first load step alone
   if (assembled_ && probed) {
     factorised_ = false;
     const bool any = ctx.any(!entries.empty());
@@ -524,9 +524,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     if (any) {
       std::vector<Gid> gids(n);
       for (std::size_t i = 0; i < n; ++i) gids[i] = P.gid(i);
-      outcome = m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift,
-                            first ? kMaxFirstFill : kMaxFill);
-      firstOnly = outcome != StiffnessMatrix::Outcome::TooLarge && m.fillRatio() > kMaxFill;
+      outcome = m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxFirstFill);
       if (ctx.root())
         ctx.log() << "quasi-static: assembled stiffness, " << m.unknowns() << " unknowns, "
                   << m.matrixNonzeros() << " stored entries, " << m.factorNonzeros()
@@ -537,12 +535,13 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
                           : "\n");
     }
     factorised_ = outcome == StiffnessMatrix::Outcome::Factorised;
-    if (firstOnly && ctx.root())
+    if (first && outcome != StiffnessMatrix::Outcome::TooLarge && m.fillRatio() > kMaxFill &&
+        ctx.root())
       ctx.log() << "quasi-static: the factor fills in over " << kMaxFill
-                << " times the matrix: the first load step by the assembled stiffness, the "
-                   "later ones with the Gershgorin masses\n";
-    if (first && outcome == StiffnessMatrix::Outcome::TooLarge) {
-      assembled_ = false;
+                << " times the matrix: the assembled stiffness until a load step needs "
+                   "momentum (cracking), then the Gershgorin masses\n";
+    if (outcome == StiffnessMatrix::Outcome::TooLarge) assembled_ = false;
+    if (first && !assembled_) {
       ctx.warn(any ? "quasi-static: masses = \"assembled\": the stiffness's factor would fill "
                      "in too much (a 3D lattice of this size); the Gershgorin masses are used"
                    : "quasi-static: masses = \"assembled\" needs a model whose forces reach no "
@@ -702,9 +701,16 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     exchange();
   }
   iterations_ += static_cast<double>(out.iterations);
-  if (firstOnly) {
+  // A factor that fills in over kMaxFill times the matrix is worth its factorisations only
+  // while Newton steps alone converge: a load step that softens (it took up momentum, or
+  // found no equilibrium) will be followed by cracking ones, each needing a new factor.
+  if (newton && matrix_->fillRatio() > kMaxFill && (out.momentumFrom >= 0 || !out.converged)) {
     assembled_ = factorised_ = false;
     matrix_.reset();
+    if (ctx.root())
+      ctx.log() << "quasi-static: the assembled stiffness is given up after this load step "
+                   "(it took up momentum or found no equilibrium); the Gershgorin masses from "
+                   "now on\n";
   }
   out.load = factor * loadTotal;
   out.displacement = alongLoads();

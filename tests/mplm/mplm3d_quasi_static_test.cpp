@@ -1,8 +1,9 @@
 // The quasi-static solver's assembled stiffness on a 3D lattice whose factor fills in more
-// than the solver allows for every load step: the first load step, which relaxes from rest,
-// is solved with it in a few Newton steps and the later ones relax with the Gershgorin
-// masses. The same bits on 1 and 2 ranks and when restarted after the first load step, and
-// the same equilibrium as a run with the Gershgorin masses throughout, within the tolerance.
+// than the solver allows for a cracking lattice: the load steps are solved with it in a few
+// Newton steps until one needs momentum (the concrete softens), and from then on they relax
+// with the Gershgorin masses. The same bits on 1 and 2 ranks and when restarted after the
+// first load step, and the same equilibria as a run with the Gershgorin masses throughout,
+// within the tolerance.
 #include <gtest/gtest.h>
 #include <mpi.h>
 
@@ -12,6 +13,7 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "quasi_static.hpp"
 #include "scenario/scenario.hpp"
@@ -20,22 +22,25 @@
 namespace pdq::mplm {
 namespace {
 
-constexpr long kSteps = 2;
+// Four load steps to 19 kN, the last of which softens, then tries towards 23.75 kN, beyond
+// the member's peak (about 19.7 kN), until two cut-backs end the run.
+constexpr long kSteps = 4;
 constexpr double kTolerance = 1e-6;
 
 // A plain cantilever 0.6 x 0.24 x 0.16 m at s = 4 cm (455 particles), clamped at one end,
-// loaded at the other below cracking: its factor holds about 10 times the matrix's entries.
+// loaded at the other: its factor holds about 10 times the matrix's entries.
 std::string member(const std::string& masses) {
   return R"(description = "3D cantilever for the first load step's assembled stiffness"
 [model]
 name = "mplm3d"
 spacing = 0.04
 [loading]
-load_scale = 2000
+load_scale = 23750
 [solver]
 kind = "quasi_static"
 tolerance = 1e-6
-load_steps = 2
+load_steps = 5
+max_cut_backs = 2
 masses = ")" +
          masses +
          R"("
@@ -81,7 +86,17 @@ long linesWith(const std::string& file, const std::string& text) {
   return n;
 }
 
-TEST(Mplm3dQuasiStatic, FirstLoadStepByTheAssembledStiffnessWhereItFillsInTooMuchForTheRest) {
+// The lines of `file` that contain `text`, by their number.
+std::vector<long> linesAt(const std::string& file, const std::string& text) {
+  std::ifstream in(file);
+  std::vector<long> at;
+  long n = 0;
+  for (std::string line; std::getline(in, line); ++n)
+    if (line.find(text) != std::string::npos) at.push_back(n);
+  return at;
+}
+
+TEST(Mplm3dQuasiStatic, AssembledStiffnessUntilALoadStepNeedsMomentumWhereItFillsInTooMuch) {
   int size = 0, rank = 0;
   MPI_Comm_size(MPI_COMM_WORLD, &size);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
@@ -97,27 +112,46 @@ TEST(Mplm3dQuasiStatic, FirstLoadStepByTheAssembledStiffnessWhereItFillsInTooMuc
   EXPECT_TRUE(one == two) << "1 and 2 ranks differ";
   EXPECT_TRUE(one == resumed) << "the run restarted after load step 1 differs";
 
-  // Load step 1 by Newton steps, load step 2 with the Gershgorin masses.
+  // Newton steps alone until the last load step, which takes up momentum; then the
+  // assembled stiffness is given up: no factorisation after it.
   const std::string log = first + "/debug.txt";
-  EXPECT_EQ(linesWith(log, "the first load step by the assembled stiffness"), 1) << log;
-  EXPECT_EQ(linesWith(log, "quasi-static: assembled stiffness,"), 1) << log;
+  EXPECT_EQ(linesWith(log, "the assembled stiffness until a load step needs momentum"), 1) << log;
+  const auto givenUp = linesAt(log, "the assembled stiffness is given up");
+  ASSERT_EQ(givenUp.size(), 1u) << log;
+  const auto factorised = linesAt(log, "quasi-static: assembled stiffness,");
+  ASSERT_FALSE(factorised.empty()) << log;
+  EXPECT_LT(factorised.back(), givenUp[0]) << log;
+  // Three tries beyond the peak (the last one named where the run stops).
+  const auto tries = linesAt(log, "has no equilibrium near the last");
+  ASSERT_EQ(tries.size(), 3u) << log;
+  EXPECT_GT(tries[0], givenUp[0]) << log;
+  const auto momentum = linesAt(log, "(momentum from iteration");
+  ASSERT_EQ(momentum.size(), 1u) << log;
+  EXPECT_EQ(momentum[0], linesAt(log, "load step 4: ")[0]) << log;
+
   const auto rows = test::loadStepRows(first), plain = test::loadStepRows("qs3d_first_gershgorin");
   ASSERT_EQ(rows.size(), static_cast<std::size_t>(kSteps));
   ASSERT_EQ(plain.size(), static_cast<std::size_t>(kSteps));
-  std::cout << "load step 1: " << rows[0][2]
-            << " iterations (the Gershgorin masses: " << plain[0][2]
-            << "); load step 2: " << rows[1][2] << " (" << plain[1][2] << ")\n";
-  EXPECT_LE(rows[0][2], 5);
-  EXPECT_GT(plain[0][2], 100 * rows[0][2]);
-  for (const auto& r : rows) EXPECT_LE(r[5], kTolerance);
-
-  // The same equilibrium: the load-weighted displacement of both runs' load steps agrees to
-  // a few times the tolerance.
   for (long k = 0; k < kSteps; ++k) {
+    std::cout << "load step " << k + 1 << ": " << rows[k][2]
+              << " iterations (the Gershgorin masses: " << plain[k][2] << ")\n";
+    EXPECT_LE(rows[k][2], 60) << "load step " << k + 1;
+    EXPECT_GT(plain[k][2], 10 * rows[k][2]) << "load step " << k + 1;
+    EXPECT_LE(rows[k][5], kTolerance);
+    // The same equilibrium: the load-weighted displacement agrees to a few times the
+    // tolerance where the lattice is elastic (load step 1). From load step 2 on the
+    // concrete softens, and the damage an iteration keeps depends on its path: the
+    // relaxation with the Gershgorin masses overshoots the equilibrium and damages a little
+    // more than Newton steps from the predictor (the displacements 0.7 to 2.2 per 10,000
+    // apart by load step 4).
     const double u = rows[k][7], v = plain[k][7];
-    ASSERT_NE(v, 0);
-    EXPECT_LT(std::fabs(u - v), 1e-4 * std::fabs(v)) << "load step " << k + 1;
+    ASSERT_GT(v, 0);
+    EXPECT_LT(std::fabs(u - v), (k == 0 ? 1e-5 : 1e-3) * v) << "load step " << k + 1;
+    if (k > 0) {
+      EXPECT_LE(u, v) << "load step " << k + 1;
+    }
   }
+  EXPECT_LE(rows[0][2], 5);
 }
 
 }  // namespace
