@@ -6,6 +6,7 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "engine/bytes.hpp"
 #include "engine/context.hpp"
@@ -16,6 +17,12 @@ namespace {
 using bytes::append;
 using bytes::take;
 
+// A factor that fills in over this many times the matrix's stored entries (3D lattices) is
+// supernodal, its dense blocks factorised by BLAS: a 3D member's factorisation takes a
+// fraction of the simplicial one's time. Sparser ones (2D lattices) stay simplicial LDLᵀ,
+// whose solves are the faster there.
+constexpr double kSupernodalFill = 8;
+
 void check(const cholmod_common& c, const char* what) {
   if (c.status < CHOLMOD_OK)
     throw std::runtime_error(std::string("stiffness matrix: CHOLMOD failed in ") + what +
@@ -23,9 +30,10 @@ void check(const cholmod_common& c, const char* what) {
 }
 }  // namespace
 
-// CHOLMOD's simplicial LDLᵀ (SuiteSparse): its ordering tries approximate minimum degree
-// and, where that fills in much (3D lattices), nested dissection (METIS), and keeps the
-// better; its analysis tells the size of the factor before the factorisation.
+// CHOLMOD's simplicial LDLᵀ, or supernodal LLᵀ where the factor fills in much (SuiteSparse):
+// its ordering tries approximate minimum degree and, where that fills in much (3D
+// lattices), nested dissection (METIS), and keeps the better; its analysis tells the size
+// of the factor before the factorisation.
 struct StiffnessMatrix::Factor {
   cholmod_common c;
   cholmod_sparse* K = nullptr;   // K̂'s lower half, compressed columns
@@ -172,22 +180,33 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
                       std::ranges::equal(pattern(F.K).second, pattern(K).second);
     cholmod_free_sparse(&F.K, &F.c);
     F.K = K;
+    F.entries = pattern(K).second.size();
     if (!same) {
       cholmod_free_factor(&F.L, &F.c);
+      F.c.supernodal = CHOLMOD_SIMPLICIAL;
       F.L = cholmod_analyze(K, &F.c);
       check(F.c, "ordering the matrix");
       F.fill = static_cast<long>(F.c.lnz);
+      if (static_cast<double>(F.fill) > kSupernodalFill * static_cast<double>(F.entries)) {
+        // The same ordering, factorised by dense blocks (BLAS) instead of column by column.
+        std::vector<int> perm(static_cast<const int*>(F.L->Perm),
+                              static_cast<const int*>(F.L->Perm) + K->ncol);
+        cholmod_free_factor(&F.L, &F.c);
+        F.c.supernodal = CHOLMOD_SUPERNODAL;
+        F.L = cholmod_analyze_p(K, perm.data(), nullptr, 0, &F.c);
+        check(F.c, "analysing the matrix's supernodes");
+      }
     }
-    F.entries = pattern(K).second.size();
     Outcome outcome = Outcome::TooLarge;
     if (static_cast<double>(F.fill) <= maxFill * static_cast<double>(F.entries)) {
       cholmod_factorize(K, F.L, &F.c);
       check(F.c, "factorising the matrix");
-      // LDLᵀ: D is each column's first entry of the simplicial factor.
       bool ok = F.c.status == CHOLMOD_OK && F.L->minor == F.L->n && unknowns > 0;
-      const auto* Lp = static_cast<const int*>(F.L->p);
-      const auto* Lx = static_cast<const double*>(F.L->x);
-      for (long j = 0; ok && j < unknowns; ++j) ok = Lx[Lp[j]] > 0;
+      if (!F.L->is_super) {  // LDLᵀ: D is each column's first entry of the simplicial factor
+        const auto* Lp = static_cast<const int*>(F.L->p);
+        const auto* Lx = static_cast<const double*>(F.L->x);
+        for (long j = 0; ok && j < unknowns; ++j) ok = Lx[Lp[j]] > 0;
+      }
       outcome = ok ? Outcome::Factorised : Outcome::NotDefinite;
     }
     reply.push_back(static_cast<char>(outcome));
