@@ -88,7 +88,7 @@ constexpr double kMaxFill = 8;
 // this many times is worth its factorisations: the first load step relaxes every mode from
 // rest (the lowest take the most iterations of the run), and the later ones' predictor is
 // not exact where the concrete softens before it cracks.
-constexpr double kMaxFirstFill = 16;
+constexpr double kMaxUncrackedFill = 16;
 // The assembled stiffness's iteration takes up momentum once a modified Newton step leaves
 // more than this share of the last out-of-balance force.
 constexpr double kNewtonContraction = 0.8;
@@ -524,7 +524,8 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     if (any) {
       std::vector<Gid> gids(n);
       for (std::size_t i = 0; i < n; ++i) gids[i] = P.gid(i);
-      outcome = m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxFirstFill);
+      outcome =
+          m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxUncrackedFill);
       if (ctx.root())
         ctx.log() << "quasi-static: assembled stiffness, " << m.unknowns() << " unknowns, "
                   << m.matrixNonzeros() << " stored entries, " << m.factorNonzeros()
@@ -538,8 +539,8 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     if (first && outcome != StiffnessMatrix::Outcome::TooLarge && m.fillRatio() > kMaxFill &&
         ctx.root())
       ctx.log() << "quasi-static: the factor fills in over " << kMaxFill
-                << " times the matrix: the assembled stiffness until a load step needs "
-                   "momentum (cracking), then the Gershgorin masses\n";
+                << " times the matrix: the assembled stiffness until a load step takes up "
+                   "momentum (the concrete softens), then the Gershgorin masses\n";
     if (outcome == StiffnessMatrix::Outcome::TooLarge) assembled_ = false;
     if (first && !assembled_) {
       ctx.warn(any ? "quasi-static: masses = \"assembled\": the stiffness's factor would fill "

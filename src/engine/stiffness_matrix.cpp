@@ -1,6 +1,7 @@
 #include "engine/stiffness_matrix.hpp"
 
 #include <cholmod.h>
+#include <dlfcn.h>
 
 #include <algorithm>
 #include <cstring>
@@ -50,6 +51,11 @@ struct StiffnessMatrix::Factor {
     c.print = 0;  // its warnings (a matrix not positive definite) are handled here
     c.supernodal = CHOLMOD_SIMPLICIAL;
     c.final_ll = 0;
+    // Where the system's BLAS is a threaded OpenBLAS, one thread: the supernodal factor's
+    // bits must not depend on how many threads it finds.
+    using SetThreads = void (*)(int);
+    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
+      set(1);
   }
   ~Factor() {
     cholmod_free_sparse(&K, &c);

@@ -115,7 +115,8 @@ TEST(Mplm3dQuasiStatic, AssembledStiffnessUntilALoadStepNeedsMomentumWhereItFill
   // Newton steps alone until the last load step, which takes up momentum; then the
   // assembled stiffness is given up: no factorisation after it.
   const std::string log = first + "/debug.txt";
-  EXPECT_EQ(linesWith(log, "the assembled stiffness until a load step needs momentum"), 1) << log;
+  EXPECT_EQ(linesWith(log, "the assembled stiffness until a load step takes up momentum"), 1)
+      << log;
   const auto givenUp = linesAt(log, "the assembled stiffness is given up");
   ASSERT_EQ(givenUp.size(), 1u) << log;
   const auto factorised = linesAt(log, "quasi-static: assembled stiffness,");
