@@ -49,7 +49,6 @@ struct StiffnessMatrix::Factor {
   Factor() {
     cholmod_start(&c);
     c.print = 0;  // its warnings (a matrix not positive definite) are handled here
-    c.supernodal = CHOLMOD_SIMPLICIAL;
     c.final_ll = 0;
     // Where the system's BLAS is a threaded OpenBLAS, one thread: the supernodal factor's
     // bits must not depend on how many threads it finds.
