@@ -299,13 +299,15 @@ std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function
       ++probes;
       if (!entries) continue;
       // f = −K u and g = K u: K_ij = (g_i − f_i) / (2 u_j), j the moved particle near i.
+      // An entry is kept where it is 0 too (a broken interaction, or DOFs that do not
+      // couple): the pattern is then that of the bonds, whatever their damage, and the
+      // ordering of the first factorisation serves every later one (and a restart's).
       for (std::size_t i = 0; i < n; ++i) {
         std::size_t j = nl;
         for (int di = 0; di < nd; ++di) {
           const std::size_t k = nd * i + di;
           const Constraint c = bodies_[i].constraint[di];
-          if (g[k] == f[k] || c == Constraint::Prescribed || c == Constraint::KeepVelocity)
-            continue;
+          if (c == Constraint::Prescribed || c == Constraint::KeepVelocity) continue;
           if (j == nl)
             for (std::size_t m : nearby[i])
               if (u[nd * m + d] != 0) {
@@ -528,7 +530,8 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
           m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxUncrackedFill);
       if (ctx.root())
         ctx.log() << "quasi-static: assembled stiffness, " << m.unknowns() << " unknowns, "
-                  << m.matrixNonzeros() << " stored entries, " << m.factorNonzeros()
+                  << m.matrixNonzeros() << " nonzero entries (" << m.matrixStored()
+                  << " stored, the bonds' zeros included), " << m.factorNonzeros()
                   << " in its factor"
                   << (outcome == StiffnessMatrix::Outcome::NotDefinite
                           ? ", not positive definite: this load step relaxes with the diagonal "

@@ -33,10 +33,10 @@ class StiffnessMatrix {
 
   // Collective. `gids` are the owned particles (in their local order) with `dofs` DOFs
   // each; `free` says which DOFs are unknowns, `entries` are this rank's rows (free ones
-  // only). K̂ = (K + Kᵀ)/2 + `shift` × diag(`fallback`), and a free DOF whose row is empty
-  // takes `fallback` as its diagonal. Not factorised when its factor would hold over
-  // `maxFill` times K̂'s stored entries (the ordering's symbolic analysis says so first).
-  // The same outcome on every rank; the solves need Factorised.
+  // only). K̂ = (K + Kᵀ)/2 + `shift` × diag(`fallback`), and a free DOF whose row holds no
+  // nonzero takes `fallback` as its diagonal (entries of 0 are kept: they are pattern). Not
+  // factorised when its factor would hold over `maxFill` times K̂'s nonzero entries (the ordering's
+  // symbolic analysis says so first). The same outcome on every rank; the solves need Factorised.
   enum class Outcome : char { Factorised, NotDefinite, TooLarge };
   Outcome factorise(Context& ctx, std::span<const Gid> gids, int dofs,
                     std::span<const unsigned char> free, const std::vector<Entry>& entries,
@@ -44,12 +44,14 @@ class StiffnessMatrix {
   // Collective: x = K̂⁻¹ b over the owned DOFs (b and x: `dofs` per owned particle; the
   // DOFs that are not free get 0). Returns bᵀx (the same bits on every rank).
   double solve(Context& ctx, std::span<const double> b, std::span<double> x) const;
-  // The free DOFs, K̂'s stored entries (its lower half) and its factor's (rank 0; 0
-  // elsewhere).
+  // The free DOFs, K̂'s nonzero entries and all its stored ones (its lower half, the
+  // pattern's zeros included), and its factor's entries (rank 0; 0 elsewhere).
   long unknowns() const;
   long matrixNonzeros() const;
+  long matrixStored() const;
   long factorNonzeros() const;
-  // The factor's entries over K̂'s stored ones, as the last factorise found them (every rank).
+  // The factor's entries over K̂'s nonzero ones, as the last factorise found them (every
+  // rank).
   double fillRatio() const { return fillRatio_; }
 
  private:
