@@ -80,15 +80,10 @@ constexpr double kFirstStepsPerCap = 10;
 // too stiff: 15 Newton iterations instead of 2).
 constexpr double kAssembledShift = 1e-12;
 // The assembled stiffness is used while its factor holds at most this many times the
-// matrix's own stored entries, so that a solve costs about a force evaluation: 2D lattices
-// stay below it; 3D ones fill in more and relax with the Gershgorin masses once they crack
-// (docs/quasi-static.md, "Assembled stiffness")...
-constexpr double kMaxFill = 8;
-// ... but while modified Newton steps alone converge (nothing cracks), a factor of up to
-// this many times is worth its factorisations: the first load step relaxes every mode from
-// rest (the lowest take the most iterations of the run), and the later ones' predictor is
-// not exact where the concrete softens before it cracks.
-constexpr double kMaxUncrackedFill = 16;
+// matrix's nonzero entries: 2D lattices (about 5) and 3D ones at s = 4 cm (about 14) take
+// it; larger 3D lattices, whose factorisations would take minutes, relax with the
+// Gershgorin masses (docs/quasi-static.md, "Assembled stiffness").
+constexpr double kMaxFill = 16;
 // The assembled stiffness's iteration takes up momentum once a modified Newton step leaves
 // more than this share of the last out-of-balance force.
 constexpr double kNewtonContraction = 0.8;
@@ -526,8 +521,7 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     if (any) {
       std::vector<Gid> gids(n);
       for (std::size_t i = 0; i < n; ++i) gids[i] = P.gid(i);
-      outcome =
-          m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxUncrackedFill);
+      outcome = m.factorise(ctx, gids, nd, free, entries, lambda, kAssembledShift, kMaxFill);
       if (ctx.root())
         ctx.log() << "quasi-static: assembled stiffness, " << m.unknowns() << " unknowns, "
                   << m.matrixNonzeros() << " nonzero entries (" << m.matrixStored()
@@ -539,11 +533,6 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
                           : "\n");
     }
     factorised_ = outcome == StiffnessMatrix::Outcome::Factorised;
-    if (first && outcome != StiffnessMatrix::Outcome::TooLarge && m.fillRatio() > kMaxFill &&
-        ctx.root())
-      ctx.log() << "quasi-static: the factor fills in over " << kMaxFill
-                << " times the matrix: the assembled stiffness until a load step takes up "
-                   "momentum (the concrete softens), then the Gershgorin masses\n";
     if (outcome == StiffnessMatrix::Outcome::TooLarge) assembled_ = false;
     if (first && !assembled_) {
       ctx.warn(any ? "quasi-static: masses = \"assembled\": the stiffness's factor would fill "
@@ -705,17 +694,6 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
     exchange();
   }
   iterations_ += static_cast<double>(out.iterations);
-  // A factor that fills in over kMaxFill times the matrix is worth its factorisations only
-  // while Newton steps alone converge: a load step that softens (it took up momentum, or
-  // found no equilibrium) will be followed by cracking ones, each needing a new factor.
-  if (newton && matrix_->fillRatio() > kMaxFill && (out.momentumFrom >= 0 || !out.converged)) {
-    assembled_ = factorised_ = false;
-    matrix_.reset();
-    if (ctx.root())
-      ctx.log() << "quasi-static: the assembled stiffness is given up after this load step "
-                   "(it took up momentum or found no equilibrium); the Gershgorin masses from "
-                   "now on\n";
-  }
   out.load = factor * loadTotal;
   out.displacement = alongLoads();
   if (out.converged && stepping && newton)

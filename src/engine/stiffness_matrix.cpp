@@ -221,9 +221,6 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
       outcome = ok ? Outcome::Factorised : Outcome::NotDefinite;
     }
     reply.push_back(static_cast<char>(outcome));
-    const double ratio =
-        F.entries > 0 ? static_cast<double>(F.fill) / static_cast<double>(F.entries) : 0.0;
-    append(reply, &ratio, 1);
     std::vector<Gid> sorted(order.size());
     for (std::size_t p = 0; p < order.size(); ++p) sorted[p] = order[p].first;
     append(reply, sorted.data(), sorted.size());
@@ -231,8 +228,7 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
   reply = ctx.broadcast(std::move(reply));
   const auto outcome = static_cast<Outcome>(reply.at(0));
   const char* in = reply.data() + 1;
-  take(in, &fillRatio_, 1);
-  const std::size_t nAll = (reply.size() - 1 - sizeof(double)) / sizeof(Gid);
+  const std::size_t nAll = (reply.size() - 1) / sizeof(Gid);
   std::vector<Gid> sorted(nAll);
   take(in, sorted.data(), nAll);
   at_.resize(n);

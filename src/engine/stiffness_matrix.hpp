@@ -50,16 +50,12 @@ class StiffnessMatrix {
   long matrixNonzeros() const;
   long matrixStored() const;
   long factorNonzeros() const;
-  // The factor's entries over K̂'s nonzero ones, as the last factorise found them (every
-  // rank).
-  double fillRatio() const { return fillRatio_; }
 
  private:
   struct Factor;
   std::unique_ptr<Factor> factor_;  // rank 0
   std::size_t values_ = 0;          // this rank's values per solve (owned × dofs)
   int dofs_ = 0;
-  double fillRatio_ = 0;
   std::vector<std::size_t> at_;  // per owned particle: its place in the order of global IDs
 };
 
