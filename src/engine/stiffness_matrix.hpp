@@ -34,9 +34,10 @@ class StiffnessMatrix {
   // Collective. `gids` are the owned particles (in their local order) with `dofs` DOFs
   // each; `free` says which DOFs are unknowns, `entries` are this rank's rows (free ones
   // only). K̂ = (K + Kᵀ)/2 + `shift` × diag(`fallback`), and a free DOF whose row holds no
-  // nonzero takes `fallback` as its diagonal (entries of 0 are kept: they are pattern). Not
-  // factorised when its factor would hold over `maxFill` times K̂'s nonzero entries (the ordering's
-  // symbolic analysis says so first). The same outcome on every rank; the solves need Factorised.
+  // nonzero takes `fallback` as its diagonal (entries of 0 are kept: they are pattern).
+  // Not factorised when its factor would hold over `maxFill` times K̂'s nonzero entries
+  // (the ordering's symbolic analysis says so first). The same outcome on every rank; the
+  // solves need Factorised.
   enum class Outcome : char { Factorised, NotDefinite, TooLarge };
   Outcome factorise(Context& ctx, std::span<const Gid> gids, int dofs,
                     std::span<const unsigned char> free, const std::vector<Entry>& entries,

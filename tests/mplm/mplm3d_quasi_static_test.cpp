@@ -13,6 +13,7 @@
 #include <fstream>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "quasi_static.hpp"
@@ -79,36 +80,28 @@ pdq::test::State runOn(int ranks, const std::string& dir, const std::string& mas
   return s;
 }
 
-long linesWith(const std::string& file, const std::string& text) {
+// The lines of `file` that contain `text`, with their numbers.
+std::vector<std::pair<long, std::string>> linesWith(const std::string& file,
+                                                    const std::string& text) {
   std::ifstream in(file);
+  std::vector<std::pair<long, std::string>> found;
   long n = 0;
-  for (std::string line; std::getline(in, line);) n += line.find(text) != std::string::npos;
-  return n;
+  for (std::string line; std::getline(in, line); ++n)
+    if (line.find(text) != std::string::npos) found.emplace_back(n, line);
+  return found;
+}
+
+// Their numbers alone.
+std::vector<long> linesAt(const std::string& file, const std::string& text) {
+  std::vector<long> at;
+  for (const auto& [n, line] : linesWith(file, text)) at.push_back(n);
+  return at;
 }
 
 // The number after `key` in `line` (0 when absent).
 double numberAfter(const std::string& line, const std::string& key) {
   const auto at = line.find(key);
   return at == std::string::npos ? 0.0 : std::stod(line.substr(at + key.size()));
-}
-
-// The lines of `file` that contain `text`.
-std::vector<std::string> linesOf(const std::string& file, const std::string& text) {
-  std::ifstream in(file);
-  std::vector<std::string> found;
-  for (std::string line; std::getline(in, line);)
-    if (line.find(text) != std::string::npos) found.push_back(line);
-  return found;
-}
-
-// The lines of `file` that contain `text`, by their number.
-std::vector<long> linesAt(const std::string& file, const std::string& text) {
-  std::ifstream in(file);
-  std::vector<long> at;
-  long n = 0;
-  for (std::string line; std::getline(in, line); ++n)
-    if (line.find(text) != std::string::npos) at.push_back(n);
-  return at;
 }
 
 TEST(Mplm3dQuasiStatic, AssembledStiffnessThroughTheSofteningLoadStepAndTheTriesBeyondThePeak) {
@@ -131,7 +124,7 @@ TEST(Mplm3dQuasiStatic, AssembledStiffnessThroughTheSofteningLoadStepAndTheTries
   // beyond the peak with the factor formed after it, each ended by the runaway look in a
   // tenth of the Gershgorin masses' iterations or fewer, at the same load factors.
   const std::string log = first + "/debug.txt", plainLog = "qs3d_first_gershgorin/debug.txt";
-  EXPECT_EQ(linesWith(log, "the Gershgorin masses"), 0) << log;
+  EXPECT_TRUE(linesWith(log, "the Gershgorin masses").empty()) << log;
   const auto factorised = linesAt(log, "quasi-static: assembled stiffness,");
   const auto tries = linesAt(log, "has no equilibrium near the last");
   ASSERT_EQ(tries.size(), 3u) << log;  // the last one named where the run stops
@@ -141,18 +134,19 @@ TEST(Mplm3dQuasiStatic, AssembledStiffnessThroughTheSofteningLoadStepAndTheTries
   const auto momentum = linesAt(log, "(momentum from iteration");
   ASSERT_EQ(momentum.size(), 1u) << log;
   EXPECT_EQ(momentum[0], linesAt(log, "load step 4: ")[0]) << log;
-  const auto tried = linesOf(log, "has no equilibrium near the last");
-  const auto plainTried = linesOf(plainLog, "has no equilibrium near the last");
+  const auto tried = linesWith(log, "has no equilibrium near the last");
+  const auto plainTried = linesWith(plainLog, "has no equilibrium near the last");
   ASSERT_EQ(plainTried.size(), tried.size()) << plainLog;
   for (std::size_t t = 0; t < tried.size(); ++t) {
-    const double its = numberAfter(tried[t], "after "),
-                 plainIts = numberAfter(plainTried[t], "after ");
+    const double its = numberAfter(tried[t].second, "after "),
+                 plainIts = numberAfter(plainTried[t].second, "after ");
     std::cout << "try " << t + 1 << ": " << its
               << " iterations (the Gershgorin masses: " << plainIts << ")\n";
-    EXPECT_GT(its, 0) << tried[t];
-    EXPECT_GE(plainIts, 10 * its) << tried[t];
-    EXPECT_EQ(numberAfter(tried[t], "(load factor "), numberAfter(plainTried[t], "(load factor "))
-        << tried[t];
+    EXPECT_GT(its, 0) << tried[t].second;
+    EXPECT_GE(plainIts, 10 * its) << tried[t].second;
+    EXPECT_EQ(numberAfter(tried[t].second, "(load factor "),
+              numberAfter(plainTried[t].second, "(load factor "))
+        << tried[t].second;
   }
 
   const auto rows = test::loadStepRows(first), plain = test::loadStepRows("qs3d_first_gershgorin");
