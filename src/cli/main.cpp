@@ -15,11 +15,11 @@
 using namespace pdq::cli;
 
 int main(int argc, char** argv) {
-  // Memory freed stays with the process (up to 1 GiB): glibc would give large blocks back to
-  // the system at once, and each new one (the quasi-static solver's matrix and messages at
-  // every load step) would fault its pages in again (docs/quasi-static.md, "Where the work
-  // goes"). Blocks over 32 MiB are still mapped and unmapped alone.
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  // Memory freed stays with the process (up to 1 GiB at the heap's top): glibc would map
+  // large blocks alone and give them back to the system when freed, and each new one (the
+  // quasi-static solver's matrix, probes and messages at every load step) would fault its
+  // pages in again (docs/quasi-static.md, "Where the work goes"). No block is mapped alone.
+  mallopt(M_MMAP_MAX, 0);
   mallopt(M_TRIM_THRESHOLD, 1 << 30);
   pdq::MpiSession mpi(&argc, &argv, true);
   // Threads are asked for with OMP_NUM_THREADS; OpenMP's own default, a thread per core in

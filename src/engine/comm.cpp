@@ -17,34 +17,44 @@ static_assert(std::is_pointer_v<MPI_Comm>, "pdq::Comm stores MPI_Comm as a point
 namespace {
 MPI_Comm mpi(void* comm) { return static_cast<MPI_Comm>(comm); }
 
-// Calls `ready` until it returns true without holding a core while the other ranks are
-// late: polls for up to 2 ms (the usual wait within a step, for a halo or a reduction behind
-// a slightly busier rank: a sleep there, woken late by the scheduler, slows every step of
-// ranks with cores of their own), then sleeps between polls, each sleep a quarter of the
-// time waited so far (a wake-up costs CPU time too, and the wait overshoots by at most a
-// quarter). Waiting by polling alone (MPI's own waits) would burn the CPU time a late rank
-// needs when ranks share cores, and count the wait as work.
+// How a rank waits for the others. Within a step (a halo, a reduction behind a slightly
+// busier rank) it polls for up to 2 ms, since a sleep there, woken late by the scheduler,
+// slows every step of ranks with cores of their own; then it sleeps between polls, each
+// sleep a quarter of the time waited so far (a wake-up costs CPU time too, and the wait
+// overshoots by at most a quarter). Waiting for rank 0's own work (a broadcast after a
+// serial solve or factorisation) it polls for 0.1 ms only and sleeps a sixteenth of the time
+// waited: a rank that polls slows rank 0's work when the two share a physical core (the
+// quasi-static solver's solves took half as long again), and rank 0 cannot finish sending
+// before the sleeper wakes (docs/quasi-static.md, "Where the work goes"). Waiting by polling
+// alone (MPI's own waits) would burn the CPU time a late rank needs when ranks share cores,
+// and count the wait as work.
+enum class Wait { WithinStep, ForRoot };
+
 template <class Ready>
-void poll(Ready&& ready) {
+void poll(Ready&& ready, Wait wait) {
   using Clock = std::chrono::steady_clock;
   using us = std::chrono::microseconds;
-  constexpr us kSpin(2000), kShortestNap(20), kLongestNap(5000);
+  constexpr us kShortestNap(20), kLongestNap(5000);
+  const us spin(wait == Wait::WithinStep ? 2000 : 100);
+  const int share = wait == Wait::WithinStep ? 4 : 16;
   if (ready()) return;
   const auto start = Clock::now();
-  while (Clock::now() - start < kSpin)
+  while (Clock::now() - start < spin)
     if (ready()) return;
   while (!ready()) {
     const auto waited = std::chrono::duration_cast<us>(Clock::now() - start);
-    std::this_thread::sleep_for(std::clamp(waited / 4, kShortestNap, kLongestNap));
+    std::this_thread::sleep_for(std::clamp(waited / share, kShortestNap, kLongestNap));
   }
 }
 
-void await(int n, MPI_Request* reqs) {
-  poll([&] {
-    int done = 0;
-    MPI_Testall(n, reqs, &done, MPI_STATUSES_IGNORE);
-    return done != 0;
-  });
+void await(int n, MPI_Request* reqs, Wait wait = Wait::WithinStep) {
+  poll(
+      [&] {
+        int done = 0;
+        MPI_Testall(n, reqs, &done, MPI_STATUSES_IGNORE);
+        return done != 0;
+      },
+      wait);
 }
 
 // MPI_Allreduce, waited for as above.
@@ -104,11 +114,13 @@ void Comm::sendrecv(const std::vector<char>& out, int dest, std::vector<char>& i
     // The size is learnt from the message's envelope before it is received.
     MPI_Status st;
     MPI_Message msg;
-    poll([&] {
-      int found = 0;
-      MPI_Improbe(src, tag, mpi(comm_), &found, &msg, &st);
-      return found != 0;
-    });
+    poll(
+        [&] {
+          int found = 0;
+          MPI_Improbe(src, tag, mpi(comm_), &found, &msg, &st);
+          return found != 0;
+        },
+        Wait::WithinStep);
     int n = 0;
     MPI_Get_count(&st, MPI_BYTE, &n);
     in.resize(n);
@@ -225,16 +237,17 @@ std::vector<std::vector<char>> Comm::gather(const std::vector<char>& block) cons
   return out;
 }
 
-// Waited for as above: ranks waiting long for rank 0 (a quasi-static strength run on fewer
-// ranks than the search has) sleep instead of holding a core.
+// Waited for as for rank 0's own work: ranks waiting long for it (a quasi-static strength
+// run on fewer ranks than the search has, the solves of its assembled stiffness) sleep
+// instead of holding a core.
 std::vector<char> Comm::broadcast(std::vector<char> data) const {
   long n = static_cast<long>(data.size());
   MPI_Request req;
   MPI_Ibcast(&n, 1, MPI_LONG, 0, mpi(comm_), &req);
-  await(1, &req);
+  await(1, &req, Wait::ForRoot);
   data.resize(n);
   MPI_Ibcast(data.data(), static_cast<int>(n), MPI_BYTE, 0, mpi(comm_), &req);
-  await(1, &req);
+  await(1, &req, Wait::ForRoot);
   return data;
 }
 

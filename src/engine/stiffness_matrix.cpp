@@ -26,6 +26,58 @@ using bytes::take;
 // restarted with more interactions broken chooses as the first run did.
 constexpr double kSupernodalFill = 4.5;
 
+// x = K̂⁻¹ b with a supernodal factor LLᵀ = PK̂Pᵀ whose values `lx` are held in single
+// precision (the arithmetic is double): the factor serves as the relaxation's preconditioner,
+// which converges on the residual computed in double whatever the factor's rounding, and the
+// solves, which stream the whole factor twice, read half the bytes (docs/quasi-static.md,
+// "Solves in single precision"). Every sum runs in a fixed order: the same bits on any
+// processor.
+[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void solveSupernodal(
+    const cholmod_factor& L, const float* lx, const long* packed, double* x, double* y, double* w) {
+  const auto* perm = static_cast<const int*>(L.Perm);
+  const auto* super = static_cast<const int*>(L.super);
+  const auto* pi = static_cast<const int*>(L.pi);
+  const auto* rows = static_cast<const int*>(L.s);
+  const long n = static_cast<long>(L.n), nsuper = static_cast<long>(L.nsuper);
+  for (long k = 0; k < n; ++k) y[k] = x[perm[k]];
+  // Each supernode: columns k1..k1+nc−1 and nr rows, the first nc of them those columns',
+  // stored column by column; w holds the values at its rows.
+  for (long sn = 0; sn < nsuper; ++sn) {  // L y' = y
+    const long k1 = super[sn], nc = super[sn + 1] - k1, nr = pi[sn + 1] - pi[sn];
+    const float* B = lx + packed[sn];
+    const int* at = rows + pi[sn];
+    std::copy(y + k1, y + k1 + nc, w);
+    std::fill(w + nc, w + nr, 0.0);
+    for (long c = 0; c < nc; ++c) {
+      const float* col = B + c * nr - c * (c + 1) / 2;
+      const double wc = w[c] / col[c];
+      w[c] = wc;
+      for (long r = c + 1; r < nr; ++r) w[r] -= col[r] * wc;
+    }
+    std::copy(w, w + nc, y + k1);
+    for (long r = nc; r < nr; ++r) y[at[r]] += w[r];
+  }
+  for (long sn = nsuper - 1; sn >= 0; --sn) {  // Lᵀ y'' = y'
+    const long k1 = super[sn], nc = super[sn + 1] - k1, nr = pi[sn + 1] - pi[sn];
+    const float* B = lx + packed[sn];
+    const int* at = rows + pi[sn];
+    for (long r = 0; r < nr; ++r) w[r] = y[at[r]];
+    for (long c = nc - 1; c >= 0; --c) {
+      const float* col = B + c * nr - c * (c + 1) / 2;
+      double lane[8] = {0, 0, 0, 0, 0, 0, 0, 0};
+      long r = c + 1;
+      for (; r + 8 <= nr; r += 8)
+        for (int l = 0; l < 8; ++l) lane[l] += col[r + l] * w[r + l];
+      for (int l = 0; r < nr; ++r, ++l) lane[l] += col[r] * w[r];
+      w[c] = (w[c] - (((lane[0] + lane[1]) + (lane[2] + lane[3])) +
+                      ((lane[4] + lane[5]) + (lane[6] + lane[7])))) /
+             col[c];
+    }
+    std::copy(w, w + nc, y + k1);
+  }
+  for (long k = 0; k < n; ++k) x[perm[k]] = y[k];
+}
+
 void check(const cholmod_common& c, const char* what) {
   if (c.status < CHOLMOD_OK)
     throw std::runtime_error(std::string("stiffness matrix: CHOLMOD failed in ") + what +
@@ -42,10 +94,13 @@ struct StiffnessMatrix::Factor {
   cholmod_sparse* K = nullptr;   // K̂'s lower half, compressed columns
   cholmod_factor* L = nullptr;   // analysed for K's pattern; factorised when `factorised`
   cholmod_dense* rhs = nullptr;  // the solves' right-hand side, and their workspaces
-  cholmod_dense *x = nullptr, *y = nullptr, *e = nullptr;
-  std::vector<long> row;  // per gathered DOF (rank order, then owned order): unknown or -1
-  std::vector<long> out;  // per gathered DOF: where it stands in the solution sent back
-  std::size_t total = 0;  // gathered DOFs
+  cholmod_dense *x = nullptr, *ys = nullptr, *e = nullptr;
+  std::vector<float> lx;          // a supernodal factor's values, for the solves
+  std::vector<long> packed;       // where each supernode starts in lx
+  std::vector<double> sol, y, w;  // a solution, and the solves' workspaces
+  std::vector<long> row;          // per gathered DOF (rank order, then owned order): unknown or -1
+  std::vector<long> out;          // per gathered DOF: where it stands in the solution sent back
+  std::size_t total = 0;          // gathered DOFs
   long unknowns = 0, stored = 0, entries = 0, fill = 0;  // K̂'s stored entries, nonzero ones,
                                                          // its factor's
 
@@ -64,7 +119,7 @@ struct StiffnessMatrix::Factor {
     cholmod_free_factor(&L, &c);
     cholmod_free_dense(&rhs, &c);
     cholmod_free_dense(&x, &c);
-    cholmod_free_dense(&y, &c);
+    cholmod_free_dense(&ys, &c);
     cholmod_free_dense(&e, &c);
     cholmod_finish(&c);
   }
@@ -213,7 +268,26 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
       cholmod_factorize(K, F.L, &F.c);
       check(F.c, "factorising the matrix");
       bool ok = F.c.status == CHOLMOD_OK && F.L->minor == F.L->n && unknowns > 0;
-      if (!F.L->is_super) {  // LDLᵀ: D is each column's first entry of the simplicial factor
+      if (F.L->is_super) {
+        // Each supernode's columns from their diagonal down (the rows above it, in its
+        // dense block, are not the factor's), one after another.
+        const auto* x = static_cast<const double*>(F.L->x);
+        const auto* px = static_cast<const int*>(F.L->px);
+        const auto* pi = static_cast<const int*>(F.L->pi);
+        const auto* super = static_cast<const int*>(F.L->super);
+        F.packed.assign(F.L->nsuper, 0);
+        F.lx.clear();
+        long most = 0;
+        for (std::size_t sn = 0; sn < F.L->nsuper; ++sn) {
+          F.packed[sn] = static_cast<long>(F.lx.size());
+          const long nc = super[sn + 1] - super[sn], nr = pi[sn + 1] - pi[sn];
+          for (long c = 0; c < nc; ++c)
+            F.lx.insert(F.lx.end(), x + px[sn] + c * nr + c, x + px[sn] + (c + 1) * nr);
+          most = std::max(most, nr);
+        }
+        F.y.resize(F.L->n);
+        F.w.resize(static_cast<std::size_t>(most));
+      } else {  // LDLᵀ: D is each column's first entry of the simplicial factor
         const auto* Lp = static_cast<const int*>(F.L->p);
         const auto* Lx = static_cast<const double*>(F.L->x);
         for (long j = 0; ok && j < unknowns; ++j) ok = Lx[Lp[j]] > 0;
@@ -262,9 +336,16 @@ double StiffnessMatrix::solve(Context& ctx, std::span<const double> b, std::span
     auto* r = static_cast<double*>(F.rhs->x);
     for (std::size_t k = 0; k < F.total; ++k)
       if (F.row[k] >= 0) r[F.row[k]] = rhs[k];
-    cholmod_solve2(CHOLMOD_A, F.L, F.rhs, nullptr, &F.x, nullptr, &F.y, &F.e, &F.c);
-    check(F.c, "solving");
-    const auto* s = static_cast<const double*>(F.x->x);
+    const double* s = nullptr;
+    if (F.L->is_super) {
+      F.sol.assign(r, r + F.unknowns);
+      solveSupernodal(*F.L, F.lx.data(), F.packed.data(), F.sol.data(), F.y.data(), F.w.data());
+      s = F.sol.data();
+    } else {
+      cholmod_solve2(CHOLMOD_A, F.L, F.rhs, nullptr, &F.x, nullptr, &F.ys, &F.e, &F.c);
+      check(F.c, "solving");
+      s = static_cast<const double*>(F.x->x);
+    }
     double bx = 0;  // in the order of the unknowns: the same on any number of ranks
     for (long u = 0; u < F.unknowns; ++u) bx += r[u] * s[u];
     append(reply, &bx, 1);
