@@ -98,9 +98,16 @@ struct StiffnessMatrix::Factor {
   std::vector<float> lx;          // a supernodal factor's values, for the solves
   std::vector<long> packed;       // where each supernode starts in lx
   std::vector<double> sol, y, w;  // a solution, and the solves' workspaces
-  std::vector<long> row;          // per gathered DOF (rank order, then owned order): unknown or -1
-  std::vector<long> out;          // per gathered DOF: where it stands in the solution sent back
-  std::size_t total = 0;          // gathered DOFs
+  // Per gathered entry of the last assembly: its key, its row and column unknowns, its
+  // place in K's values (−1: not an unknown's), whether it is on the diagonal; per
+  // unknown, its diagonal's place.
+  std::vector<StiffnessEntry> keys;
+  std::vector<long> rowOf, colOf, placed, diagonal;
+  std::vector<unsigned char> onDiagonal;
+  std::vector<long> keyRows;  // `row` as it was then
+  std::vector<long> row;      // per gathered DOF (rank order, then owned order): unknown or -1
+  std::vector<long> out;      // per gathered DOF: where it stands in the solution sent back
+  std::size_t total = 0;      // gathered DOFs
   long unknowns = 0, stored = 0, entries = 0, fill = 0;  // K̂'s stored entries, nonzero ones,
                                                          // its factor's
 
@@ -197,40 +204,106 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
     // order, so the ranks' order does not matter. A diagonal entry is whole, and the shift
     // (or the fallback of an empty row) comes after it.
     const std::size_t nEntries = gathered.size() / sizeof(Entry);
-    cholmod_triplet* T = cholmod_allocate_triplet(
-        static_cast<std::size_t>(unknowns), static_cast<std::size_t>(unknowns),
-        nEntries + static_cast<std::size_t>(unknowns), -1, CHOLMOD_REAL, &F.c);
-    check(F.c, "allocating the matrix");
-    auto* ti = static_cast<int*>(T->i);
-    auto* tj = static_cast<int*>(T->j);
-    auto* tx = static_cast<double*>(T->x);
-    auto add = [&](long i, long j, double value) {
-      ti[T->nnz] = static_cast<int>(i);
-      tj[T->nnz] = static_cast<int>(j);
-      tx[T->nnz] = value;
-      ++T->nnz;
-    };
-    std::vector<unsigned char> hasRow(unknowns, 0);
-    const char* in = gathered.data();
-    for (std::size_t e = 0; e < nEntries; ++e) {
-      Entry x;
-      take(in, &x, 1);
-      const long i = unknown(x.row, x.rowDof), j = unknown(x.col, x.colDof);
-      if (i < 0 || j < 0) continue;
-      if (x.value != 0) hasRow[i] = 1;
-      add(std::max(i, j), std::min(i, j), i == j ? x.value : x.value / 2);
+    std::vector<Entry> got(nEntries);
+    if (nEntries > 0) std::memcpy(got.data(), gathered.data(), gathered.size());
+    // The entries of a later probe come in the same order (the bonds' pattern, the same
+    // particles): each goes straight to its place in K̂, found the first time.
+    const bool again =
+        F.K && F.placed.size() == nEntries && F.keyRows == F.row &&
+        std::equal(got.begin(), got.end(), F.keys.begin(), [](auto& x, auto& y) {
+          return x.row == y.row && x.col == y.col && x.rowDof == y.rowDof && x.colDof == y.colDof;
+        });
+    cholmod_sparse* K = nullptr;
+    if (again) {
+      K = cholmod_copy_sparse(F.K, &F.c);
+      check(F.c, "copying the matrix");
+      auto* kx = static_cast<double*>(K->x);
+      const std::size_t stored = static_cast<const int*>(K->p)[K->ncol];
+      std::vector<unsigned char> set(stored, 0);
+      // The first term is put, the second added, as the triplets' sum does.
+      auto put = [&](long at, double value) {
+        kx[at] = set[at] ? kx[at] + value : value;
+        set[at] = 1;
+      };
+      std::vector<unsigned char> hasRow(unknowns, 0);
+      for (std::size_t e = 0; e < nEntries; ++e) {
+        const long at = F.placed[e];
+        if (at < 0) continue;
+        if (got[e].value != 0) hasRow[F.rowOf[e]] = 1;
+        put(at, F.onDiagonal[e] ? got[e].value : got[e].value / 2);
+      }
+      for (std::size_t k = 0; k < F.total; ++k) {
+        const long i = F.row[k];
+        if (i < 0) continue;
+        if (!hasRow[i])
+          put(F.diagonal[i], diag[k]);
+        else if (shift > 0)
+          put(F.diagonal[i], shift * diag[k]);
+      }
+      for (std::size_t at = 0; at < stored; ++at)
+        if (!set[at]) kx[at] = 0;
+    } else {
+      cholmod_triplet* T = cholmod_allocate_triplet(
+          static_cast<std::size_t>(unknowns), static_cast<std::size_t>(unknowns),
+          nEntries + static_cast<std::size_t>(unknowns), -1, CHOLMOD_REAL, &F.c);
+      check(F.c, "allocating the matrix");
+      auto* ti = static_cast<int*>(T->i);
+      auto* tj = static_cast<int*>(T->j);
+      auto* tx = static_cast<double*>(T->x);
+      auto add = [&](long i, long j, double value) {
+        ti[T->nnz] = static_cast<int>(i);
+        tj[T->nnz] = static_cast<int>(j);
+        tx[T->nnz] = value;
+        ++T->nnz;
+      };
+      F.rowOf.assign(nEntries, -1);
+      F.colOf.assign(nEntries, -1);
+      std::vector<unsigned char> hasRow(unknowns, 0);
+      const char* in = gathered.data();
+      for (std::size_t e = 0; e < nEntries; ++e) {
+        Entry x;
+        take(in, &x, 1);
+        const long i = unknown(x.row, x.rowDof), j = unknown(x.col, x.colDof);
+        F.rowOf[e] = i;
+        F.colOf[e] = j;
+        if (i < 0 || j < 0) continue;
+        if (x.value != 0) hasRow[i] = 1;
+        add(std::max(i, j), std::min(i, j), i == j ? x.value : x.value / 2);
+      }
+      for (std::size_t k = 0; k < F.total; ++k) {
+        const long i = F.row[k];
+        if (i < 0) continue;
+        if (!hasRow[i])
+          add(i, i, diag[k]);
+        else if (shift > 0)
+          add(i, i, shift * diag[k]);
+      }
+      K = cholmod_triplet_to_sparse(T, 0, &F.c);
+      cholmod_free_triplet(&T, &F.c);
+      check(F.c, "assembling the matrix");
+      // Where each entry and each diagonal went (none without a place: a triplet's sum
+      // that found none would be a matrix without it).
+      const auto* kp = static_cast<const int*>(K->p);
+      const auto* ki = static_cast<const int*>(K->i);
+      auto place = [&](long r, long c) -> long {
+        const int* at = std::lower_bound(ki + kp[c], ki + kp[c + 1], static_cast<int>(r));
+        return at < ki + kp[c + 1] && *at == r ? at - ki : -2;
+      };
+      F.keys = got;
+      F.keyRows = F.row;
+      F.placed.assign(nEntries, -1);
+      F.onDiagonal.assign(nEntries, 0);
+      for (std::size_t e = 0; e < nEntries; ++e) {
+        const long i = F.rowOf[e], j = F.colOf[e];
+        if (i < 0 || j < 0) continue;
+        F.placed[e] = place(std::max(i, j), std::min(i, j));
+        F.onDiagonal[e] = i == j;
+      }
+      F.diagonal.assign(unknowns, -1);
+      for (long i = 0; i < unknowns; ++i) F.diagonal[i] = place(i, i);
+      if (std::ranges::count(F.placed, -2) > 0 || std::ranges::count(F.diagonal, -2) > 0)
+        F.placed.clear();
     }
-    for (std::size_t k = 0; k < F.total; ++k) {
-      const long i = F.row[k];
-      if (i < 0) continue;
-      if (!hasRow[i])
-        add(i, i, diag[k]);
-      else if (shift > 0)
-        add(i, i, shift * diag[k]);
-    }
-    cholmod_sparse* K = cholmod_triplet_to_sparse(T, 0, &F.c);
-    cholmod_free_triplet(&T, &F.c);
-    check(F.c, "assembling the matrix");
     // The ordering and the factor's structure depend on K̂'s pattern alone: kept while it
     // stays the same (the interactions that break only change values until one is lost).
     auto pattern = [&](const cholmod_sparse* A) {
