@@ -98,11 +98,11 @@ struct StiffnessMatrix::Factor {
   std::vector<float> lx;          // a supernodal factor's values, for the solves
   std::vector<long> packed;       // where each supernode starts in lx
   std::vector<double> sol, y, w;  // a solution, and the solves' workspaces
-  // Per gathered entry of the last assembly: its key, its row and column unknowns, its
-  // place in K's values (−1: not an unknown's), whether it is on the diagonal; per
-  // unknown, its diagonal's place.
+  // Per gathered entry of the last assembly: its key, its row's unknown, its place in K's
+  // values (−1: not an unknown's), whether it is on the diagonal; per unknown, its
+  // diagonal's place.
   std::vector<StiffnessEntry> keys;
-  std::vector<long> rowOf, colOf, placed, diagonal;
+  std::vector<long> rowOf, placed, diagonal;
   std::vector<unsigned char> onDiagonal;
   std::vector<long> keyRows;  // `row` as it was then
   std::vector<long> row;      // per gathered DOF (rank order, then owned order): unknown or -1
@@ -257,15 +257,13 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
         ++T->nnz;
       };
       F.rowOf.assign(nEntries, -1);
-      F.colOf.assign(nEntries, -1);
+      std::vector<long> colOf(nEntries, -1);
       std::vector<unsigned char> hasRow(unknowns, 0);
-      const char* in = gathered.data();
       for (std::size_t e = 0; e < nEntries; ++e) {
-        Entry x;
-        take(in, &x, 1);
+        const Entry& x = got[e];
         const long i = unknown(x.row, x.rowDof), j = unknown(x.col, x.colDof);
         F.rowOf[e] = i;
-        F.colOf[e] = j;
+        colOf[e] = j;
         if (i < 0 || j < 0) continue;
         if (x.value != 0) hasRow[i] = 1;
         add(std::max(i, j), std::min(i, j), i == j ? x.value : x.value / 2);
@@ -294,7 +292,7 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
       F.placed.assign(nEntries, -1);
       F.onDiagonal.assign(nEntries, 0);
       for (std::size_t e = 0; e < nEntries; ++e) {
-        const long i = F.rowOf[e], j = F.colOf[e];
+        const long i = F.rowOf[e], j = colOf[e];
         if (i < 0 || j < 0) continue;
         F.placed[e] = place(std::max(i, j), std::min(i, j));
         F.onDiagonal[e] = i == j;
