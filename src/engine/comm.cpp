@@ -23,11 +23,10 @@ MPI_Comm mpi(void* comm) { return static_cast<MPI_Comm>(comm); }
 // sleep a quarter of the time waited so far (a wake-up costs CPU time too, and the wait
 // overshoots by at most a quarter). Waiting for rank 0's own work (a broadcast after a
 // serial solve or factorisation) it polls for 0.1 ms only and sleeps a sixteenth of the time
-// waited: a rank that polls slows rank 0's work when the two share a physical core (the
-// quasi-static solver's solves took half as long again), and rank 0 cannot finish sending
-// before the sleeper wakes (docs/quasi-static.md, "Where the work goes"). Waiting by polling
-// alone (MPI's own waits) would burn the CPU time a late rank needs when ranks share cores,
-// and count the wait as work.
+// waited: a rank that polls slows rank 0's work when the two share a physical core, and
+// rank 0 cannot finish sending before the sleeper wakes (docs/quasi-static.md, "Solves in
+// single precision"). Waiting by polling alone (MPI's own waits) would burn the CPU time a
+// late rank needs when ranks share cores, and count the wait as work.
 enum class Wait { WithinStep, ForRoot };
 
 template <class Ready>
