@@ -26,20 +26,21 @@ using bytes::take;
 // restarted with more interactions broken chooses as the first run did.
 constexpr double kSupernodalFill = 4.5;
 
-// x = K̂⁻¹ b with a supernodal factor LLᵀ = PK̂Pᵀ whose values `lx` are held in single
-// precision (the arithmetic is double): the factor serves as the relaxation's preconditioner,
-// which converges on the residual computed in double whatever the factor's rounding, and the
-// solves, which stream the whole factor twice, read half the bytes (docs/quasi-static.md,
-// "Solves in single precision"). Every sum runs in a fixed order: the same bits on any
-// processor.
+// x = K̂⁻¹ b (b in the unknowns' order) with a supernodal factor LLᵀ = PK̂Pᵀ whose values `lx` are
+// held in single precision (the arithmetic is double): the factor serves as the relaxation's
+// preconditioner, which converges on the residual computed in double whatever the factor's
+// rounding, and the solves, which stream the whole factor twice, read half the bytes
+// (docs/quasi-static.md, "Solves in single precision"). Every sum runs in a fixed order: the same
+// bits on any processor.
 [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void solveSupernodal(
-    const cholmod_factor& L, const float* lx, const long* packed, double* x, double* y, double* w) {
+    const cholmod_factor& L, const float* lx, const long* packed, const double* b, double* x,
+    double* y, double* w) {
   const auto* perm = static_cast<const int*>(L.Perm);
   const auto* super = static_cast<const int*>(L.super);
   const auto* pi = static_cast<const int*>(L.pi);
   const auto* rows = static_cast<const int*>(L.s);
   const long n = static_cast<long>(L.n), nsuper = static_cast<long>(L.nsuper);
-  for (long k = 0; k < n; ++k) y[k] = x[perm[k]];
+  for (long k = 0; k < n; ++k) y[k] = b[perm[k]];
   // Each supernode: columns k1..k1+nc−1 and nr rows, the first nc of them those columns',
   // stored column by column; w holds the values at its rows.
   for (long sn = 0; sn < nsuper; ++sn) {  // L y' = y
@@ -98,12 +99,10 @@ struct StiffnessMatrix::Factor {
   std::vector<float> lx;          // a supernodal factor's values, for the solves
   std::vector<long> packed;       // where each supernode starts in lx
   std::vector<double> sol, y, w;  // a solution, and the solves' workspaces
-  // Per gathered entry of the last assembly: its key, its row's unknown, its place in K's
-  // values (−1: not an unknown's), whether it is on the diagonal; per unknown, its
-  // diagonal's place.
+  // Per gathered entry of the last assembly: its key, its row's unknown and its place in
+  // K's values (−1: not an unknown's); per unknown, its diagonal's place.
   std::vector<StiffnessEntry> keys;
   std::vector<long> rowOf, placed, diagonal;
-  std::vector<unsigned char> onDiagonal;
   std::vector<long> keyRows;  // `row` as it was then
   std::vector<long> row;      // per gathered DOF (rank order, then owned order): unknown or -1
   std::vector<long> out;      // per gathered DOF: where it stands in the solution sent back
@@ -230,7 +229,7 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
         const long at = F.placed[e];
         if (at < 0) continue;
         if (got[e].value != 0) hasRow[F.rowOf[e]] = 1;
-        put(at, F.onDiagonal[e] ? got[e].value : got[e].value / 2);
+        put(at, at == F.diagonal[F.rowOf[e]] ? got[e].value : got[e].value / 2);
       }
       for (std::size_t k = 0; k < F.total; ++k) {
         const long i = F.row[k];
@@ -290,12 +289,10 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
       F.keys = got;
       F.keyRows = F.row;
       F.placed.assign(nEntries, -1);
-      F.onDiagonal.assign(nEntries, 0);
       for (std::size_t e = 0; e < nEntries; ++e) {
         const long i = F.rowOf[e], j = colOf[e];
         if (i < 0 || j < 0) continue;
         F.placed[e] = place(std::max(i, j), std::min(i, j));
-        F.onDiagonal[e] = i == j;
       }
       F.diagonal.assign(unknowns, -1);
       for (long i = 0; i < unknowns; ++i) F.diagonal[i] = place(i, i);
@@ -409,8 +406,8 @@ double StiffnessMatrix::solve(Context& ctx, std::span<const double> b, std::span
       if (F.row[k] >= 0) r[F.row[k]] = rhs[k];
     const double* s = nullptr;
     if (F.L->is_super) {
-      F.sol.assign(r, r + F.unknowns);
-      solveSupernodal(*F.L, F.lx.data(), F.packed.data(), F.sol.data(), F.y.data(), F.w.data());
+      F.sol.resize(static_cast<std::size_t>(F.unknowns));
+      solveSupernodal(*F.L, F.lx.data(), F.packed.data(), r, F.sol.data(), F.y.data(), F.w.data());
       s = F.sol.data();
     } else {
       cholmod_solve2(CHOLMOD_A, F.L, F.rhs, nullptr, &F.x, nullptr, &F.ys, &F.e, &F.c);

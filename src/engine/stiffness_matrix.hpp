@@ -2,8 +2,9 @@
 // The quasi-static solver's assembled stiffness (docs/quasi-static.md, "Assembled
 // stiffness"): entries K_ij of the free degrees of freedom, probed by finite differences on
 // every rank, gathered on rank 0, made symmetric and factorised there (CHOLMOD's sparse
-// LDLᵀ, its ordering by minimum degree or nested dissection), and solves with it: a right-hand side
-// given per owned DOF on every rank, the solution sent back to each. Rows and columns are ordered
+// LDLᵀ, its ordering by minimum degree or nested dissection; a supernodal factor's solves
+// read a single-precision copy of it), and solves with it: a right-hand side given per owned
+// DOF on every rank, the solution sent back to each. Rows and columns are ordered
 // by global ID, so the matrix, its factors and every solution are the same bits on any number of
 // ranks.
 #include <memory>
