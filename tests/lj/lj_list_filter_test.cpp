@@ -1,13 +1,17 @@
-// The list build's distance filter: the portable loop against the distances themselves, and
-// the filter the build chooses (AVX-512 where the processor has it) against the portable
-// one, on ranges of every length modulo 8 and candidates placed on and around the radius.
+// The distance filters: the list build's, and the force kernel's first pass (which keeps
+// the separations and squared distances too). Each portable loop against the distances
+// themselves, and the filter chosen (AVX-512 where the processor has it) against the
+// portable one, bit for bit, on ranges of every length modulo 8 and candidates placed on
+// and around the radius.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
 #include <vector>
 
+#include "models/lj/kernel.hpp"
 #include "models/lj/verlet_list.hpp"
 
 namespace {
@@ -70,6 +74,94 @@ TEST(LjListFilter, ChosenFilterKeepsWhatThePortableLoopKeeps) {
       EXPECT_EQ(run(chosen, c, from, to, r * r), want) << from << ".." << to;
       kept += want.size();
     }
+  EXPECT_GT(kept, 0u);
+}
+
+// The kernel's rows: x y z and a fourth double; candidate k at row 3 + 2k (rows between and
+// around them hold other values), particle i at row 0, (0.25, -0.5, 1).
+std::vector<double> kernelRows(const Candidates& c) {
+  std::vector<double> pos(4 * (2 * c.x.size() + 4), -7.0);
+  pos[0] = 0.25, pos[1] = -0.5, pos[2] = 1;
+  for (std::size_t k = 0; k < c.x.size(); ++k) {
+    double* r = &pos[4 * (3 + 2 * k)];
+    r[0] = c.x[k] + 0.25, r[1] = c.y[k] - 0.5, r[2] = c.z[k] + 1, r[3] = 1e300;
+  }
+  return pos;
+}
+
+// The kept pairs of candidates [from, to) (appended after `before` already kept, which the
+// filter must leave alone).
+struct Kept {
+  std::vector<double> dx, dy, dz, r2;
+  std::vector<std::uint32_t> j;
+  bool operator==(const Kept&) const = default;
+};
+Kept keepWith(pdq::lj::KeepPairs f, const std::vector<double>& pos,
+              const std::vector<std::uint32_t>& rows, std::size_t from, std::size_t to, double r2,
+              std::size_t before) {
+  pdq::lj::KernelScratch s;
+  s.reserve(before + rows.size());
+  for (std::size_t q = 0; q < before; ++q) s.dx[q] = s.dy[q] = s.dz[q] = s.r2[q] = 3.0 + q;
+  const std::size_t m =
+      f(pos.data(), 4, rows.data() + from, rows.data() + to, pos[0], pos[1], pos[2], r2, s, before);
+  Kept k;
+  k.dx.assign(s.dx.begin(), s.dx.begin() + m);
+  k.dy.assign(s.dy.begin(), s.dy.begin() + m);
+  k.dz.assign(s.dz.begin(), s.dz.begin() + m);
+  k.r2.assign(s.r2.begin(), s.r2.begin() + m);
+  k.j.assign(s.j.begin() + before, s.j.begin() + m);
+  return k;
+}
+
+TEST(LjKernelFilter, PortableKeepsThoseCloserThanTheCutWithTheirSeparations) {
+  std::mt19937_64 rng(13);
+  const double r = 1.3;
+  const Candidates c = around(120, r, rng);
+  const std::vector<double> pos = kernelRows(c);
+  std::vector<std::uint32_t> rows;
+  for (std::size_t k = 0; k < c.x.size(); ++k)
+    rows.push_back(static_cast<std::uint32_t>(3 + 2 * k));
+  for (std::size_t from : {0u, 3u, 8u})
+    for (std::size_t to = from; to <= 40; ++to) {
+      const Kept got = keepWith(pdq::lj::keepPairs, pos, rows, from, to, r * r, 2);
+      std::vector<std::uint32_t> want;
+      for (std::size_t k = from; k < to; ++k) {
+        const double* xk = &pos[4 * rows[k]];
+        const double ex = pos[0] - xk[0], ey = pos[1] - xk[1], ez = pos[2] - xk[2];
+        if (ex * ex + ey * ey + ez * ez < r * r) want.push_back(rows[k]);
+      }
+      ASSERT_EQ(got.j, want) << from << ".." << to;
+      for (std::size_t q = 0; q < got.j.size(); ++q) {
+        const double* xk = &pos[4 * got.j[q]];
+        EXPECT_EQ(got.dx[2 + q], pos[0] - xk[0]);
+        EXPECT_EQ(got.dz[2 + q], pos[2] - xk[2]);
+        EXPECT_LT(got.r2[2 + q], r * r);
+      }
+      EXPECT_EQ(got.dx[0], 3.0);  // what was kept before stays
+      EXPECT_EQ(got.r2[1], 4.0);
+    }
+}
+
+TEST(LjKernelFilter, ChosenFilterKeepsThePortableBits) {
+  const pdq::lj::KeepPairs chosen = pdq::lj::chosenKeepPairs();
+  EXPECT_EQ(chosen == pdq::lj::keepPairsAvx512, __builtin_cpu_supports("x86-64-v4") != 0);
+  std::mt19937_64 rng(14);
+  const double r = 1.3;
+  const Candidates c = around(300, r, rng);
+  const std::vector<double> pos = kernelRows(c);
+  std::vector<std::uint32_t> rows;
+  for (std::size_t k = 0; k < c.x.size(); ++k)
+    rows.push_back(static_cast<std::uint32_t>(3 + 2 * k));
+  std::shuffle(rows.begin(), rows.end(), rng);  // rows in any order, as a list's partners
+  std::size_t kept = 0;
+  for (std::size_t before : {0u, 5u})
+    for (std::size_t from : {0u, 1u, 5u, 8u, 13u})
+      for (std::size_t to = from; to <= 300; to += 1 + to % 7) {
+        const Kept want = keepWith(pdq::lj::keepPairs, pos, rows, from, to, r * r, before);
+        EXPECT_TRUE(keepWith(chosen, pos, rows, from, to, r * r, before) == want)
+            << before << ": " << from << ".." << to;
+        kept += want.j.size();
+      }
   EXPECT_GT(kept, 0u);
 }
 

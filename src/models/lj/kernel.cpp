@@ -29,36 +29,51 @@ using V4 = double __attribute__((vector_size(32)));
   sumL += lo;
 }
 
-template <bool ForceShift, bool Energy>
-[[gnu::always_inline]] inline void particle(const PairLJ& pair, const Grid& fg, const Grid& eg,
-                                            std::size_t i, const double* pos, std::size_t stride,
-                                            const VerletList& lists, KernelOut& out,
-                                            KernelScratch& s) {
+// The portable first pass (keepPairs), inlined into each clone of the kernel.
+[[gnu::always_inline]] inline std::size_t keep(const double* pos, std::size_t stride,
+                                               const std::uint32_t* k, const std::uint32_t* last,
+                                               double x, double y, double z, double rc2,
+                                               KernelScratch& s, std::size_t m) {
   double* dx = s.dx.data();
   double* dy = s.dy.data();
   double* dz = s.dz.data();
   double* r2 = s.r2.data();
   std::uint32_t* jj = s.j.data();
+  for (; k != last; ++k) {
+    const double* xj = pos + std::size_t(*k) * stride;
+    const double ex = x - xj[0], ey = y - xj[1], ez = z - xj[2];
+    const double d2 = ex * ex + ey * ey + ez * ez;
+    dx[m] = ex;
+    dy[m] = ey;
+    dz[m] = ez;
+    r2[m] = d2;
+    jj[m] = *k;
+    m += d2 < rc2;
+  }
+  return m;
+}
+
+template <bool ForceShift, bool Energy>
+[[gnu::always_inline]] inline void particle(const PairLJ& pair, const Grid& fg, const Grid& eg,
+                                            std::size_t i, const double* pos, std::size_t stride,
+                                            const VerletList& lists, KernelOut& out,
+                                            KernelScratch& s, bool wide) {
+  double* dx = s.dx.data();
+  double* dy = s.dy.data();
+  double* dz = s.dz.data();
+  double* r2 = s.r2.data();
+  const std::uint32_t* jj = s.j.data();
   const double* xi = pos + i * stride;
   const double x = xi[0], y = xi[1], z = xi[2], rc2 = pair.rc2;
   // 1. Keep the pairs closer than rc: owned partners first, then ghosts.
-  std::size_t m = 0;
-  auto keep = [&](const std::uint32_t* k, const std::uint32_t* last) {
-    for (; k != last; ++k) {
-      const double* xj = pos + std::size_t(*k) * stride;
-      const double ex = x - xj[0], ey = y - xj[1], ez = z - xj[2];
-      const double d2 = ex * ex + ey * ey + ez * ez;
-      dx[m] = ex;
-      dy[m] = ey;
-      dz[m] = ez;
-      r2[m] = d2;
-      jj[m] = *k;
-      m += d2 < rc2;
-    }
-  };
-  keep(lists.begin(i), lists.ghosts(i));
-  const std::size_t owned = m;
-  keep(lists.ghosts(i), lists.end(i));
+  std::size_t m = 0, owned = 0;
+  if (wide) {
+    owned = keepPairsAvx512(pos, stride, lists.begin(i), lists.ghosts(i), x, y, z, rc2, s, 0);
+    m = keepPairsAvx512(pos, stride, lists.ghosts(i), lists.end(i), x, y, z, rc2, s, owned);
+  } else {
+    owned = keep(pos, stride, lists.begin(i), lists.ghosts(i), x, y, z, rc2, s, 0);
+    m = keep(pos, stride, lists.ghosts(i), lists.end(i), x, y, z, rc2, s, owned);
+  }
   // Pad the last group with harmless pairs: zero separation vector (so zero force) at
   // distance rc (finite terms); their energies are masked below.
   const std::size_t kept = m;
@@ -118,11 +133,23 @@ template <bool ForceShift, bool Energy>
                                          const double* pos, std::size_t stride,
                                          const VerletList& lists, long first, long last,
                                          KernelOut& out, KernelScratch& scratch) {
+  static const bool avx512 = chosenKeepPairs() == keepPairsAvx512;
+  const bool wide = avx512 && stride >= 4;  // keepPairsAvx512 loads four doubles a row
   for (long i = first; i < last; ++i)
-    particle<ForceShift, Energy>(pair, fg, eg, i, pos, stride, lists, out, scratch);
+    particle<ForceShift, Energy>(pair, fg, eg, i, pos, stride, lists, out, scratch, wide);
 }
 
 }  // namespace
+
+KeepPairs chosenKeepPairs() {
+  return __builtin_cpu_supports("x86-64-v4") ? keepPairsAvx512 : keepPairs;
+}
+
+std::size_t keepPairs(const double* pos, std::size_t stride, const std::uint32_t* first,
+                      const std::uint32_t* last, double x, double y, double z, double rc2,
+                      KernelScratch& s, std::size_t m) {
+  return keep(pos, stride, first, last, x, y, z, rc2, s, m);
+}
 
 // Compiled for several instruction sets, chosen at load time. The arithmetic is the same
 // IEEE operations on each (no FMA contraction), and the sums are exact anyway.

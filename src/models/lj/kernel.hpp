@@ -21,7 +21,8 @@
 // rank.
 //
 // Three passes per particle: the list's pairs closer than rc are kept without branches
-// (structure of arrays); the pair law is evaluated on them four at a time, vectorised;
+// (structure of arrays; eight candidates at a time, gathered and compressed, where the
+// processor has AVX-512); the pair law is evaluated on them four at a time, vectorised;
 // the owned partners receive their terms (scalar scatter).
 #include <cmath>
 #include <cstdint>
@@ -57,7 +58,7 @@ struct KernelScratch {
   std::vector<double> t[10];  // split terms of the kept pairs: f (h, l) x 3, u (h, l), w (h, l)
   std::vector<std::uint32_t> j;
   void reserve(std::size_t n) {
-    const std::size_t m = n + 4;  // room for the padding of the last group of four
+    const std::size_t m = n + 8;  // room for the padding, and for keepPairs' overrun
     if (dx.size() >= m) return;
     dx.resize(m), dy.resize(m), dz.resize(m), r2.resize(m), j.resize(m);
     for (auto& v : t) v.resize(m);
@@ -73,6 +74,26 @@ struct KernelOut {
   double* energy = nullptr;  // kEnergyRow per owned particle, added to (null: forces only)
   double closest2 = 0;       // smallest r^2 of a kept pair, lowered
 };
+
+// The first pass for one particle at (x, y, z): of its partners k in [first, last) (rows
+// `stride` doubles apart in pos, x y z first), those closer than sqrt(rc2) are appended at
+// `m` to the kept pairs, with their separations x_i − x_k and squared distances; returns the
+// new count. May write 8 entries past it.
+std::size_t keepPairs(const double* pos, std::size_t stride, const std::uint32_t* first,
+                      const std::uint32_t* last, double x, double y, double z, double rc2,
+                      KernelScratch& s, std::size_t m);
+// The same in AVX-512 (avx512.cpp), for processors that have it (x86-64-v4) and rows of at
+// least four doubles (it loads four a row): the same operations, so the same bits.
+std::size_t keepPairsAvx512(const double* pos, std::size_t stride, const std::uint32_t* first,
+                            const std::uint32_t* last, double x, double y, double z, double rc2,
+                            KernelScratch& s, std::size_t m);
+
+// The first pass the kernel uses: keepPairsAvx512 where the processor has AVX-512, else
+// keepPairs (the kernel also takes keepPairs for rows of fewer than four doubles).
+using KeepPairs = std::size_t (*)(const double*, std::size_t, const std::uint32_t*,
+                                  const std::uint32_t*, double, double, double, double,
+                                  KernelScratch&, std::size_t);
+KeepPairs chosenKeepPairs();
 
 // Adds the terms of the pairs of owned particles [first, last) to `out`. pos/stride: rows
 // of positions (x, y, z first) of the local particles.
