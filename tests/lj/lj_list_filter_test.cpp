@@ -2,12 +2,14 @@
 // the separations and squared distances too). Each portable loop against the distances
 // themselves, and the filter chosen (AVX-512 where the processor has it) against the
 // portable one, bit for bit, on ranges of every length modulo 8 and candidates placed on
-// and around the radius.
+// and around the radius. The kernel's third pass, which gives the partners their forces,
+// likewise: the chosen one against the portable one, on every count modulo 8.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -163,6 +165,64 @@ TEST(LjKernelFilter, ChosenFilterKeepsThePortableBits) {
         kept += want.j.size();
       }
   EXPECT_GT(kept, 0u);
+}
+
+// The forces of `rows` partners (rows of kForceRow, adjacent, as the kernel's are) after
+// giving them the terms of the first `owned` of `partners` pairs.
+std::vector<double> givenWith(pdq::lj::GiveForces f, const pdq::lj::KernelScratch& s,
+                              std::size_t owned, std::size_t rows) {
+  std::vector<double> force(rows * pdq::lj::kForceRow);
+  for (std::size_t k = 0; k < force.size(); ++k) force[k] = 0.125 * static_cast<double>(k % 13);
+  f(s, owned, force.data());
+  return force;
+}
+
+TEST(LjKernelGive, PortableSubtractsEachPairsTermsFromItsPartner) {
+  std::mt19937_64 rng(15);
+  std::uniform_real_distribution<double> u(-1, 1);
+  pdq::lj::KernelScratch s;
+  s.reserve(40);
+  const std::size_t rows = 60;
+  std::vector<std::uint32_t> partners(rows);
+  std::iota(partners.begin(), partners.end(), 0u);
+  std::shuffle(partners.begin(), partners.end(), rng);
+  for (std::size_t q = 0; q < 40; ++q) {
+    s.j[q] = partners[q];
+    for (int c = 0; c < 6; ++c) s.t[c][q] = u(rng);
+  }
+  const auto before =
+      givenWith([](const pdq::lj::KernelScratch&, std::size_t, double*) {}, s, 0, rows);
+  const auto after = givenWith(pdq::lj::giveForces, s, 40, rows);
+  for (std::size_t q = 0; q < 40; ++q)
+    for (int c = 0; c < 6; ++c) {
+      const std::size_t k = s.j[q] * pdq::lj::kForceRow + c;
+      EXPECT_EQ(after[k], before[k] - s.t[c][q]) << q << " " << c;
+    }
+  for (std::size_t r = 40; r < rows; ++r)  // the rows of no pair are left alone
+    for (int c = 0; c < 6; ++c) {
+      const std::size_t k = partners[r] * pdq::lj::kForceRow + c;
+      EXPECT_EQ(after[k], before[k]);
+    }
+}
+
+TEST(LjKernelGive, ChosenGivesThePortableBits) {
+  const pdq::lj::GiveForces chosen = pdq::lj::chosenGiveForces();
+  EXPECT_EQ(chosen == pdq::lj::giveForcesAvx512, __builtin_cpu_supports("x86-64-v4") != 0);
+  std::mt19937_64 rng(16);
+  std::uniform_real_distribution<double> u(-1, 1);
+  pdq::lj::KernelScratch s;
+  s.reserve(100);
+  const std::size_t rows = 120;
+  std::vector<std::uint32_t> partners(rows);
+  std::iota(partners.begin(), partners.end(), 0u);
+  std::shuffle(partners.begin(), partners.end(), rng);
+  for (std::size_t q = 0; q < 100; ++q) {
+    s.j[q] = partners[q];
+    for (int c = 0; c < 6; ++c) s.t[c][q] = u(rng) * std::ldexp(1.0, static_cast<int>(q % 9));
+  }
+  for (std::size_t owned = 0; owned <= 100; ++owned)
+    EXPECT_TRUE(givenWith(chosen, s, owned, rows) == givenWith(pdq::lj::giveForces, s, owned, rows))
+        << owned;
 }
 
 }  // namespace

@@ -83,4 +83,36 @@ std::size_t keepPairsAvx512(const double* pos, std::size_t stride, const std::ui
   return m;
 }
 
+void giveForcesAvx512(const KernelScratch& s, std::size_t owned, double* force) {
+  for (std::size_t q = 0; q < owned; q += 8) {
+    const std::size_t left = owned - q;
+    const __mmask8 in = left >= 8 ? 0xff : static_cast<__mmask8>((1u << left) - 1);
+    __m512d t[6];
+    for (int c = 0; c < 6; ++c) t[c] = _mm512_maskz_loadu_pd(in, s.t[c].data() + q);
+    // Pair 2M's components t0 t1, t2 t3 and t4 t5 in 128-bit lane M of e01, e23 and e45,
+    // pair 2M + 1's in o01, o23 and o45.
+    const __m512d e01 = _mm512_unpacklo_pd(t[0], t[1]), o01 = _mm512_unpackhi_pd(t[0], t[1]);
+    const __m512d e23 = _mm512_unpacklo_pd(t[2], t[3]), o23 = _mm512_unpackhi_pd(t[2], t[3]);
+    const __m512d e45 = _mm512_unpacklo_pd(t[4], t[5]), o45 = _mm512_unpackhi_pd(t[4], t[5]);
+    // A partner's row as four and two doubles, each loaded and stored whole (a masked
+    // access of the row would overlap the next row's).
+    auto give = [&]<int M>(std::size_t l, __m512d a, __m512d b, __m512d c) {
+      if (l >= left) return;
+      double* fj = force + std::size_t(s.j[q + l]) * kForceRow;
+      const __m256d lo = _mm256_insertf128_pd(_mm256_castpd128_pd256(_mm512_extractf64x2_pd(a, M)),
+                                              _mm512_extractf64x2_pd(b, M), 1);
+      _mm256_storeu_pd(fj, _mm256_sub_pd(_mm256_loadu_pd(fj), lo));
+      _mm_storeu_pd(fj + 4, _mm_sub_pd(_mm_loadu_pd(fj + 4), _mm512_extractf64x2_pd(c, M)));
+    };
+    give.operator()<0>(0, e01, e23, e45);
+    give.operator()<0>(1, o01, o23, o45);
+    give.operator()<1>(2, e01, e23, e45);
+    give.operator()<1>(3, o01, o23, o45);
+    give.operator()<2>(4, e01, e23, e45);
+    give.operator()<2>(5, o01, o23, o45);
+    give.operator()<3>(6, e01, e23, e45);
+    give.operator()<3>(7, o01, o23, o45);
+  }
+}
+
 }  // namespace pdq::lj

@@ -53,11 +53,19 @@ using V4 = double __attribute__((vector_size(32)));
   return m;
 }
 
+// The portable third pass's forces (giveForces), inlined into each clone of the kernel.
+[[gnu::always_inline]] inline void give(const KernelScratch& s, std::size_t owned, double* force) {
+  for (std::size_t q = 0; q < owned; ++q) {
+    double* fj = force + std::size_t(s.j[q]) * kForceRow;
+    for (int c = 0; c < 6; ++c) fj[c] -= s.t[c][q];
+  }
+}
+
 template <bool ForceShift, bool Energy>
 [[gnu::always_inline]] inline void particle(const PairLJ& pair, const Grid& fg, const Grid& eg,
                                             std::size_t i, const double* pos, std::size_t stride,
                                             const VerletList& lists, KernelOut& out,
-                                            KernelScratch& s, bool wide) {
+                                            KernelScratch& s, bool avx512, bool wide) {
   double* dx = s.dx.data();
   double* dy = s.dy.data();
   double* dz = s.dz.data();
@@ -110,10 +118,12 @@ template <bool ForceShift, bool Energy>
     }
   }
   // 3. The owned partners' terms: the opposite force, the same energy and virial.
-  for (std::size_t q = 0; q < owned; ++q) {
-    double* fj = out.force + std::size_t(jj[q]) * kForceRow;
-    for (int c = 0; c < 6; ++c) fj[c] -= t[c][q];
-    if constexpr (Energy) {
+  if (avx512)
+    giveForcesAvx512(s, owned, out.force);
+  else
+    give(s, owned, out.force);
+  if constexpr (Energy) {
+    for (std::size_t q = 0; q < owned; ++q) {
       double* ej = out.energy + std::size_t(jj[q]) * kEnergyRow;
       for (int c = 0; c < 4; ++c) ej[c] += t[6 + c][q];  // the same half
     }
@@ -133,16 +143,23 @@ template <bool ForceShift, bool Energy>
                                          const double* pos, std::size_t stride,
                                          const VerletList& lists, long first, long last,
                                          KernelOut& out, KernelScratch& scratch) {
-  static const bool avx512 = chosenKeepPairs() == keepPairsAvx512;
-  const bool wide = avx512 && stride >= 4;  // keepPairsAvx512 loads four doubles a row
+  static const bool avx512 = chosenGiveForces() == giveForcesAvx512;
+  static const bool keep512 = chosenKeepPairs() == keepPairsAvx512;
+  const bool wide = keep512 && stride >= 4;  // keepPairsAvx512 loads four doubles a row
   for (long i = first; i < last; ++i)
-    particle<ForceShift, Energy>(pair, fg, eg, i, pos, stride, lists, out, scratch, wide);
+    particle<ForceShift, Energy>(pair, fg, eg, i, pos, stride, lists, out, scratch, avx512, wide);
 }
 
 }  // namespace
 
+void giveForces(const KernelScratch& s, std::size_t owned, double* force) { give(s, owned, force); }
+
 KeepPairs chosenKeepPairs() {
   return __builtin_cpu_supports("x86-64-v4") ? keepPairsAvx512 : keepPairs;
+}
+
+GiveForces chosenGiveForces() {
+  return __builtin_cpu_supports("x86-64-v4") ? giveForcesAvx512 : giveForces;
 }
 
 std::size_t keepPairs(const double* pos, std::size_t stride, const std::uint32_t* first,

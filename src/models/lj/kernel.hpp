@@ -88,12 +88,20 @@ std::size_t keepPairsAvx512(const double* pos, std::size_t stride, const std::ui
                             const std::uint32_t* last, double x, double y, double z, double rc2,
                             KernelScratch& s, std::size_t m);
 
-// The first pass the kernel uses: keepPairsAvx512 where the processor has AVX-512, else
-// keepPairs (the kernel also takes keepPairs for rows of fewer than four doubles).
+// The third pass's forces: each owned partner j[q], q < owned, receives the opposite of
+// the pair's force terms (its row of `force`, kForceRow wide, less t[0..5][q]).
+void giveForces(const KernelScratch& s, std::size_t owned, double* force);
+// The same in AVX-512 (avx512.cpp): a partner's row at once, the same subtractions.
+void giveForcesAvx512(const KernelScratch& s, std::size_t owned, double* force);
+
+// The passes the kernel uses: the AVX-512 ones where the processor has it, else the
+// portable ones (and keepPairs for rows of fewer than four doubles).
 using KeepPairs = std::size_t (*)(const double*, std::size_t, const std::uint32_t*,
                                   const std::uint32_t*, double, double, double, double,
                                   KernelScratch&, std::size_t);
 KeepPairs chosenKeepPairs();
+using GiveForces = void (*)(const KernelScratch&, std::size_t, double*);
+GiveForces chosenGiveForces();
 
 // Adds the terms of the pairs of owned particles [first, last) to `out`. pos/stride: rows
 // of positions (x, y, z first) of the local particles.
