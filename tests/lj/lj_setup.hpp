@@ -24,6 +24,7 @@ struct Melt {
   std::array<int, 3> procs{0, 0, 0};
   double minCellSize = 0;  // 0: cutoff + skin, as the model requires
   int divisions = 0;       // cells cut into divisions^3 sub-cells; 0: the model's default
+  bool portable = false;   // the model's kernel = "portable"
   std::uint64_t seed = 2026;
 };
 
@@ -36,6 +37,7 @@ inline std::unique_ptr<Simulation> makeMelt(const Melt& m, Comm& comm) {
   p.set("epsilon", numberText(m.epsilon));
   p.set("sigma", numberText(m.sigma));
   if (m.divisions > 0) p.set("cell_divisions", std::to_string(m.divisions));
+  if (m.portable) p.set("kernel", "portable");
   Problem pb = makeProblem("lj", p, {});
   FccSpec spec;
   spec.cells = {m.cells, m.cells, m.cells};

@@ -11,22 +11,43 @@ namespace {
 // AVX, two xmm ones where not. The helpers are inlined, so the ABI note does not apply.
 #pragma GCC diagnostic ignored "-Wpsabi"
 using V4 = double __attribute__((vector_size(32)));
-[[gnu::always_inline]] inline V4 load(const double* p) {
-  V4 v;
+// Eight: one zmm register, for the clone that has AVX-512 (the others never take it).
+using V8 = double __attribute__((vector_size(64)));
+template <class V>
+[[gnu::always_inline]] inline V load(const double* p) {
+  V v;
   std::memcpy(&v, p, sizeof v);
   return v;
 }
-[[gnu::always_inline]] inline V4 splat(double x) { return V4{x, x, x, x}; }
+template <class V>
+[[gnu::always_inline]] inline V splat(double x) {
+  return V{} + x;
+}
 
-// Splits four terms onto the grid (see kernel.hpp), stores the parts and adds them up.
-[[gnu::always_inline]] inline void splitInto(V4 t, const Grid& g, double* h, double* l, V4& sumH,
-                                             V4& sumL) {
-  const V4 hi = (t + g.m1) - g.m1;
-  const V4 lo = ((t - hi) + g.m2) - g.m2;
+// Splits a vector of terms onto the grid (see kernel.hpp), stores the parts and adds them up.
+template <class V>
+[[gnu::always_inline]] inline void splitInto(V t, const Grid& g, double* h, double* l, V& sumH,
+                                             V& sumL) {
+  const V hi = (t + g.m1) - g.m1;
+  const V lo = ((t - hi) + g.m2) - g.m2;
   std::memcpy(h, &hi, sizeof hi);
   std::memcpy(l, &lo, sizeof lo);
   sumH += hi;
   sumL += lo;
+}
+
+// The force of the pair law over r, f(r)/r, for a vector of squared distances.
+template <bool ForceShift, class V>
+[[gnu::always_inline]] inline V forceOverR(V d2, double f12, double f6, double fc) {
+  const V ir2 = 1 / d2;
+  const V ir6 = ir2 * ir2 * ir2;
+  V fr = (f12 * ir6 - f6) * ir6 * ir2;
+  if constexpr (ForceShift) {
+    V r = {};
+    for (unsigned l = 0; l < sizeof(V) / sizeof(double); ++l) r[l] = std::sqrt(d2[l]);
+    fr -= fc / r;
+  }
+  return fr;
 }
 
 // The portable first pass (keepPairs), inlined into each clone of the kernel.
@@ -94,23 +115,36 @@ template <bool ForceShift, bool Energy>
   for (int c = 0; c < 10; ++c) t[c] = s.t[c].data();
   const double* d[3] = {dx, dy, dz};
   V4 acc[10] = {};
-  V4 low = splat(rc2);
-  for (std::size_t q = 0; q < m; q += 4) {
-    const V4 d2 = load(r2 + q);
-    low = d2 < low ? d2 : low;
-    const V4 ir2 = 1 / d2;
-    const V4 ir6 = ir2 * ir2 * ir2;
-    V4 fr = (f12 * ir6 - f6) * ir6 * ir2;
-    if constexpr (ForceShift) {
-      fr -= fc / V4{std::sqrt(d2[0]), std::sqrt(d2[1]), std::sqrt(d2[2]), std::sqrt(d2[3])};
+  V4 low = splat<V4>(rc2);
+  std::size_t q = 0;
+  if constexpr (!Energy) {
+    if (avx512) {
+      // Eight at a time while eight are left; the sums are exact, so their order is free.
+      V8 acc8[6] = {};
+      V8 low8 = splat<V8>(rc2);
+      for (; q + 8 <= m; q += 8) {
+        const V8 d2 = load<V8>(r2 + q);
+        low8 = d2 < low8 ? d2 : low8;
+        const V8 fr = forceOverR<ForceShift>(d2, f12, f6, fc);
+        for (int a = 0; a < 3; ++a)
+          splitInto(fr * load<V8>(d[a] + q), fg, t[a] + q, t[3 + a] + q, acc8[a], acc8[3 + a]);
+      }
+      for (int c = 0; c < 6; ++c) acc[c] += load<V4>(&acc8[c][0]) + load<V4>(&acc8[c][4]);
+      const V4 lo = load<V4>(&low8[0]), hi = load<V4>(&low8[4]);
+      low = lo < hi ? lo : hi;
     }
+  }
+  for (; q < m; q += 4) {
+    const V4 d2 = load<V4>(r2 + q);
+    low = d2 < low ? d2 : low;
+    const V4 fr = forceOverR<ForceShift>(d2, f12, f6, fc);
     for (int a = 0; a < 3; ++a)
-      splitInto(fr * load(d[a] + q), fg, t[a] + q, t[3 + a] + q, acc[a], acc[3 + a]);
+      splitInto(fr * load<V4>(d[a] + q), fg, t[a] + q, t[3 + a] + q, acc[a], acc[3 + a]);
     if constexpr (Energy) {
       // Half of each pair's energy and virial goes to each particle; padding adds nothing.
       V4 u;
       for (int l = 0; l < 4; ++l) u[l] = q + l < kept ? 0.5 * pair.energy(d2[l]) : 0.0;
-      const V4 w = q + 4 <= kept ? splat(0.5)
+      const V4 w = q + 4 <= kept ? splat<V4>(0.5)
                                  : V4{q < kept ? 0.5 : 0.0, q + 1 < kept ? 0.5 : 0.0,
                                       q + 2 < kept ? 0.5 : 0.0, 0.0};
       splitInto(u, eg, t[6] + q, t[7] + q, acc[6], acc[7]);
@@ -142,10 +176,11 @@ template <bool ForceShift, bool Energy>
 [[gnu::always_inline]] inline void range(const PairLJ& pair, const Grid& fg, const Grid& eg,
                                          const double* pos, std::size_t stride,
                                          const VerletList& lists, long first, long last,
-                                         KernelOut& out, KernelScratch& scratch) {
-  static const bool avx512 = chosenGiveForces() == giveForcesAvx512;
+                                         KernelOut& out, KernelScratch& scratch, bool portable) {
+  static const bool give512 = chosenGiveForces() == giveForcesAvx512;
   static const bool keep512 = chosenKeepPairs() == keepPairsAvx512;
-  const bool wide = keep512 && stride >= 4;  // keepPairsAvx512 loads four doubles a row
+  const bool avx512 = give512 && !portable;
+  const bool wide = keep512 && !portable && stride >= 4;  // keepPairsAvx512 loads 4 a row
   for (long i = first; i < last; ++i)
     particle<ForceShift, Energy>(pair, fg, eg, i, pos, stride, lists, out, scratch, avx512, wide);
 }
@@ -172,18 +207,19 @@ std::size_t keepPairs(const double* pos, std::size_t stride, const std::uint32_t
 // IEEE operations on each (no FMA contraction), and the sums are exact anyway.
 [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void pairSumsRange(
     const PairLJ& pair, const Grid& fg, const Grid& eg, const double* pos, std::size_t stride,
-    const VerletList& lists, long first, long last, KernelOut& out, KernelScratch& scratch) {
+    const VerletList& lists, long first, long last, KernelOut& out, KernelScratch& scratch,
+    bool portable) {
   const bool fs = pair.shift == Shift::Force;
   if (out.energy) {
     if (fs)
-      range<true, true>(pair, fg, eg, pos, stride, lists, first, last, out, scratch);
+      range<true, true>(pair, fg, eg, pos, stride, lists, first, last, out, scratch, portable);
     else
-      range<false, true>(pair, fg, eg, pos, stride, lists, first, last, out, scratch);
+      range<false, true>(pair, fg, eg, pos, stride, lists, first, last, out, scratch, portable);
   } else {
     if (fs)
-      range<true, false>(pair, fg, eg, pos, stride, lists, first, last, out, scratch);
+      range<true, false>(pair, fg, eg, pos, stride, lists, first, last, out, scratch, portable);
     else
-      range<false, false>(pair, fg, eg, pos, stride, lists, first, last, out, scratch);
+      range<false, false>(pair, fg, eg, pos, stride, lists, first, last, out, scratch, portable);
   }
 }
 

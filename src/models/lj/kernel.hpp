@@ -104,9 +104,10 @@ using GiveForces = void (*)(const KernelScratch&, std::size_t, double*);
 GiveForces chosenGiveForces();
 
 // Adds the terms of the pairs of owned particles [first, last) to `out`. pos/stride: rows
-// of positions (x, y, z first) of the local particles.
+// of positions (x, y, z first) of the local particles. `portable`: the portable passes even
+// where the processor has AVX-512 (the same bits, for checking).
 void pairSumsRange(const PairLJ& pair, const Grid& forceGrid, const Grid& energyGrid,
                    const double* pos, std::size_t stride, const VerletList& lists, long first,
-                   long last, KernelOut& out, KernelScratch& scratch);
+                   long last, KernelOut& out, KernelScratch& scratch, bool portable);
 
 }  // namespace pdq::lj

@@ -47,6 +47,7 @@ class LennardJones final : public Model {
     skin_ = p.number("skin", 0.3, 0.0, 1e300);
     dt_ = p.number("dt", 0.005, 1e-300, 1e300);
     divisions_ = static_cast<int>(p.integer("cell_divisions", 1, 1, 4));
+    portable_ = p.choice("kernel", "auto", {"auto", "portable"}) == "portable";
     const std::string s = p.choice("shift", "energy", {"none", "energy", "force"});
     const Shift shift = s == "none" ? Shift::None : s == "energy" ? Shift::Energy : Shift::Force;
     pair_ = PairLJ(epsilon, sigma, rc, shift);
@@ -148,7 +149,7 @@ class LennardJones final : public Model {
       out.energy = energy ? a.energy.data() : nullptr;
       out.closest2 = pair_.rc2;
       pairSumsRange(pair_, forceGrid_, energyGrid_, pos_.data(), 4, lists_, n * t / nt,
-                    n * (t + 1) / nt, out, scratch);
+                    n * (t + 1) / nt, out, scratch, portable_);
       closest2 = out.closest2;
 #pragma omp barrier
 #pragma omp for schedule(static)
@@ -189,7 +190,7 @@ class LennardJones final : public Model {
   }
   void buildLists(Context& ctx) {
     packPositions(ctx.particles);
-    lists_.build(ctx, pos_.data(), 4, ctx.listRadius());
+    lists_.build(ctx, pos_.data(), 4, ctx.listRadius(), portable_);
   }
 
   struct Accumulator {
@@ -201,6 +202,7 @@ class LennardJones final : public Model {
   double closest_ = 0;  // closest pair allowed
   double mass_ = 1, skin_ = 0.3, dt_ = 0.005;
   int divisions_ = 1;
+  bool portable_ = false;  // kernel = "portable": no AVX-512 loops (the same bits)
   VerletList lists_;
   std::vector<double> energy_;
   mutable std::vector<KernelScratch> scratch_;  // one per OpenMP thread

@@ -22,9 +22,11 @@ KeepNear chosenKeepNear() {
   return __builtin_cpu_supports("x86-64-v4") ? keepNearAvx512 : keepNear;
 }
 
-void VerletList::build(const Context& ctx, const double* pos, std::size_t stride, double radius) {
+void VerletList::build(const Context& ctx, const double* pos, std::size_t stride, double radius,
+                       bool portable) {
   const std::size_t n = ctx.particles.owned();
-  static const KeepNear keep = chosenKeepNear();
+  static const KeepNear chosen = chosenKeepNear();
+  const KeepNear keep = portable ? keepNear : chosen;
 
   const double r2max = radius * radius;
   start_.assign(n + 1, 0);

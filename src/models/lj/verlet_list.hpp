@@ -38,7 +38,9 @@ KeepNear chosenKeepNear();
 class VerletList {
  public:
   // pos: packed positions of the local particles, `stride` doubles a row (x, y, z first).
-  void build(const Context& ctx, const double* pos, std::size_t stride, double radius);
+  // `portable`: keepNear even where the processor has AVX-512.
+  void build(const Context& ctx, const double* pos, std::size_t stride, double radius,
+             bool portable);
 
   // Partners of owned particle i: [begin, ghosts) owned partners, [ghosts, end) ghosts.
   const std::uint32_t* begin(std::size_t i) const { return index_.data() + start_[i]; }
