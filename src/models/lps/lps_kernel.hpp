@@ -12,7 +12,7 @@ namespace pdq::peri {
 struct LpsView {
   const std::int32_t* partner;  // local index of each bond's partner
   double* attr;                 // per bond: reference length, ω V_j w (0 once broken), 1/m_j
-  const double* x;              // alterable rows (x, y, z first), nA doubles each
+  const double* x;              // position rows (x, y, z first), nA doubles each
   std::size_t nA;
   const double* theta;     // dilatation of every local particle (owned and ghosts)
   double a, b;             // A/ρ and B/ρ of the force state

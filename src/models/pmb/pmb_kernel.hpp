@@ -14,7 +14,7 @@ namespace pdq::peri {
 struct PmbView {
   const std::int32_t* partner;  // local index of each bond's partner
   double* attr;                 // per bond: reference length, weight (0 once broken)
-  const double* x;              // alterable rows (x, y, z first), nA doubles each
+  const double* x;              // position rows (x, y, z first), nA doubles each
   std::size_t nA;
   double criticalStretch;  // 0: bonds never break
   Bonds* bonds;            // a bond that breaks is also killed here (the engine's flag)
