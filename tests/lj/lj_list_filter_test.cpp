@@ -91,6 +91,14 @@ std::vector<double> kernelRows(const Candidates& c) {
   return pos;
 }
 
+// The rows kernelRows put the candidates in, in candidate order.
+std::vector<std::uint32_t> rowsOf(const Candidates& c) {
+  std::vector<std::uint32_t> rows;
+  for (std::size_t k = 0; k < c.x.size(); ++k)
+    rows.push_back(static_cast<std::uint32_t>(3 + 2 * k));
+  return rows;
+}
+
 // The kept pairs of candidates [from, to) (appended after `before` already kept, which the
 // filter must leave alone).
 struct Kept {
@@ -120,9 +128,7 @@ TEST(LjKernelFilter, PortableKeepsThoseCloserThanTheCutWithTheirSeparations) {
   const double r = 1.3;
   const Candidates c = around(120, r, rng);
   const std::vector<double> pos = kernelRows(c);
-  std::vector<std::uint32_t> rows;
-  for (std::size_t k = 0; k < c.x.size(); ++k)
-    rows.push_back(static_cast<std::uint32_t>(3 + 2 * k));
+  const std::vector<std::uint32_t> rows = rowsOf(c);
   for (std::size_t from : {0u, 3u, 8u})
     for (std::size_t to = from; to <= 40; ++to) {
       const Kept got = keepWith(pdq::lj::keepPairs, pos, rows, from, to, r * r, 2);
@@ -151,9 +157,7 @@ TEST(LjKernelFilter, ChosenFilterKeepsThePortableBits) {
   const double r = 1.3;
   const Candidates c = around(300, r, rng);
   const std::vector<double> pos = kernelRows(c);
-  std::vector<std::uint32_t> rows;
-  for (std::size_t k = 0; k < c.x.size(); ++k)
-    rows.push_back(static_cast<std::uint32_t>(3 + 2 * k));
+  std::vector<std::uint32_t> rows = rowsOf(c);
   std::shuffle(rows.begin(), rows.end(), rng);  // rows in any order, as a list's partners
   std::size_t kept = 0;
   for (std::size_t before : {0u, 5u})
@@ -177,19 +181,29 @@ std::vector<double> givenWith(pdq::lj::GiveForces f, const pdq::lj::KernelScratc
   return force;
 }
 
-TEST(LjKernelGive, PortableSubtractsEachPairsTermsFromItsPartner) {
-  std::mt19937_64 rng(15);
+// n pairs whose partners are the first n of `partners`, every row of `rows` in random
+// order, with force terms in [-1, 1) times 2^(q mod `spread`) for pair q.
+pdq::lj::KernelScratch pairsTo(std::size_t n, std::size_t rows, std::uint64_t seed, int spread,
+                               std::vector<std::uint32_t>& partners) {
+  std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u(-1, 1);
   pdq::lj::KernelScratch s;
-  s.reserve(40);
-  const std::size_t rows = 60;
-  std::vector<std::uint32_t> partners(rows);
+  s.reserve(n);
+  partners.resize(rows);
   std::iota(partners.begin(), partners.end(), 0u);
   std::shuffle(partners.begin(), partners.end(), rng);
-  for (std::size_t q = 0; q < 40; ++q) {
+  for (std::size_t q = 0; q < n; ++q) {
     s.j[q] = partners[q];
-    for (int c = 0; c < 6; ++c) s.t[c][q] = u(rng);
+    for (int c = 0; c < 6; ++c)
+      s.t[c][q] = u(rng) * std::ldexp(1.0, static_cast<int>(q % static_cast<std::size_t>(spread)));
   }
+  return s;
+}
+
+TEST(LjKernelGive, PortableSubtractsEachPairsTermsFromItsPartner) {
+  const std::size_t rows = 60;
+  std::vector<std::uint32_t> partners;
+  const pdq::lj::KernelScratch s = pairsTo(40, rows, 15, 1, partners);
   const auto before =
       givenWith([](const pdq::lj::KernelScratch&, std::size_t, double*) {}, s, 0, rows);
   const auto after = givenWith(pdq::lj::giveForces, s, 40, rows);
@@ -208,18 +222,9 @@ TEST(LjKernelGive, PortableSubtractsEachPairsTermsFromItsPartner) {
 TEST(LjKernelGive, ChosenGivesThePortableBits) {
   const pdq::lj::GiveForces chosen = pdq::lj::chosenGiveForces();
   EXPECT_EQ(chosen == pdq::lj::giveForcesAvx512, __builtin_cpu_supports("x86-64-v4") != 0);
-  std::mt19937_64 rng(16);
-  std::uniform_real_distribution<double> u(-1, 1);
-  pdq::lj::KernelScratch s;
-  s.reserve(100);
   const std::size_t rows = 120;
-  std::vector<std::uint32_t> partners(rows);
-  std::iota(partners.begin(), partners.end(), 0u);
-  std::shuffle(partners.begin(), partners.end(), rng);
-  for (std::size_t q = 0; q < 100; ++q) {
-    s.j[q] = partners[q];
-    for (int c = 0; c < 6; ++c) s.t[c][q] = u(rng) * std::ldexp(1.0, static_cast<int>(q % 9));
-  }
+  std::vector<std::uint32_t> partners;
+  const pdq::lj::KernelScratch s = pairsTo(100, rows, 16, 9, partners);
   for (std::size_t owned = 0; owned <= 100; ++owned)
     EXPECT_TRUE(givenWith(chosen, s, owned, rows) == givenWith(pdq::lj::giveForces, s, owned, rows))
         << owned;
