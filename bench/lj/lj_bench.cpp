@@ -10,6 +10,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <string>
 
 #include "engine/model.hpp"
@@ -17,8 +18,9 @@
 #include "io/standard_outputs.hpp"
 #include "prep/fcc.hpp"
 
-int main(int argc, char** argv) {
-  pdq::MpiSession mpi(&argc, &argv);
+namespace {
+
+int run(int argc, char** argv) {
   if (argc != 3 && argc != 4) {
     std::fprintf(stderr, "usage: lj_bench CELLS STEPS [DIVISIONS]\n");
     return 2;
@@ -88,4 +90,16 @@ int main(int argc, char** argv) {
   for (const auto& b : comm.gather(std::vector<char>(line.begin(), line.end())))
     if (comm.root()) std::fwrite(b.data(), 1, b.size(), stdout);
   return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  pdq::MpiSession mpi(&argc, &argv);
+  try {
+    return run(argc, argv);
+  } catch (const std::exception& e) {  // bad sizes: the engine's message, not an abort
+    std::fprintf(stderr, "lj_bench: %s\n", e.what());
+    return 1;
+  }
 }
