@@ -27,6 +27,7 @@
 
 #include "engine/error.hpp"
 #include "engine/model.hpp"
+#include "engine/packed_positions.hpp"
 #include "models/lj/kernel.hpp"
 #include "models/lj/pair_lj.hpp"
 #include "models/lj/verlet_list.hpp"
@@ -128,7 +129,7 @@ class LennardJones final : public Model {
     const Particles& P = ctx.particles;
     const long n = static_cast<long>(P.owned());
     if (n == 0) return;
-    packPositions(P);
+    pos_.pack(P);
     if (energy) virial_.resize(n);
     const int threads = omp_get_max_threads();
     scratch_.resize(std::max<std::size_t>(scratch_.size(), threads));
@@ -148,8 +149,8 @@ class LennardJones final : public Model {
       out.force = a.force.data();
       out.energy = energy ? a.energy.data() : nullptr;
       out.closest2 = pair_.rc2;
-      pairSumsRange(pair_, forceGrid_, energyGrid_, pos_.data(), 4, lists_, n * t / nt,
-                    n * (t + 1) / nt, out, scratch, portable_);
+      pairSumsRange(pair_, forceGrid_, energyGrid_, pos_.rows(), PackedPositions::kRow, lists_,
+                    n * t / nt, n * (t + 1) / nt, out, scratch, portable_);
       closest2 = out.closest2;
 #pragma omp barrier
 #pragma omp for schedule(static)
@@ -182,15 +183,9 @@ class LennardJones final : public Model {
 
   // Positions packed four to a row (32 bytes), a denser copy of the alterable table for
   // the kernel's scattered reads.
-  void packPositions(const Particles& P) const {
-    const long nLocal = static_cast<long>(P.local());
-    pos_.resize(4 * nLocal);
-#pragma omp parallel for schedule(static)
-    for (long j = 0; j < nLocal; ++j) std::copy_n(P.alter(j), 3, &pos_[4 * j]);
-  }
   void buildLists(Context& ctx) {
-    packPositions(ctx.particles);
-    lists_.build(ctx, pos_.data(), 4, ctx.listRadius(), portable_);
+    pos_.pack(ctx.particles);
+    lists_.build(ctx, pos_.rows(), PackedPositions::kRow, ctx.listRadius(), portable_);
   }
 
   struct Accumulator {
@@ -206,7 +201,7 @@ class LennardJones final : public Model {
   VerletList lists_;
   std::vector<double> energy_;
   mutable std::vector<KernelScratch> scratch_;  // one per OpenMP thread
-  mutable std::vector<double> pos_;             // packed positions for the kernel
+  mutable PackedPositions pos_;                 // the positions the kernel reads
   mutable std::vector<double> virial_;          // per owned particle (globals)
   mutable std::vector<Accumulator> acc_;        // one per OpenMP thread
 };

@@ -67,9 +67,9 @@ class Lps final : public PeriModel {
       return;
     }
     theta_.resize(P.local());
-    const LpsView view{B.partners().data(), B.attr(0),        packedPositions(P),
-                       kPackedRow,          theta_.data(),    A_ / density_,
-                       B_ / density_,       criticalStretch_, &B};
+    const LpsView view{B.partners().data(),   B.attr(0),        packed_.pack(P),
+                       PackedPositions::kRow, theta_.data(),    A_ / density_,
+                       B_ / density_,         criticalStretch_, &B};
     const LpsKernels k = kernels_;
     const double D = dim_;
     // Pass 1: dilatation of the owned particles, then to the ghosts.

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 #include <sstream>
 
@@ -118,20 +117,6 @@ bool PeriModel::cutByNotch(const double* a, const double* b) const {
     if (side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0) return true;
   }
   return false;
-}
-
-const double* PeriModel::packedPositions(const Particles& P) {
-  const std::size_t nl = P.local();
-  packed_.resize(kPackedRow * nl + kPackedRow);
-  const std::size_t bytes = kPackedRow * sizeof(double);
-  const std::size_t off = reinterpret_cast<std::uintptr_t>(packed_.data()) % bytes;
-  double* rows = packed_.data() + (bytes - off) % bytes / sizeof(double);  // on a row boundary
-  for (std::size_t k = 0; k < nl; ++k) {
-    const double* a = P.alter(k);
-    double* r = rows + kPackedRow * k;
-    r[0] = a[0], r[1] = a[1], r[2] = a[2], r[3] = 0;
-  }
-  return rows;
 }
 
 std::vector<double> PeriModel::onGhosts(Context& ctx, const std::vector<double>& owned, int width) {

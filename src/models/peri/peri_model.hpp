@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "engine/model.hpp"
+#include "engine/packed_positions.hpp"
 
 namespace pdq::peri {
 
@@ -62,19 +63,13 @@ class PeriModel : public Model {
   // `width` values per owned particle, extended to every local particle (owned and ghosts).
   static std::vector<double> onGhosts(Context& ctx, const std::vector<double>& owned,
                                       int width = 1);
-  // The positions of every local particle in rows of kPackedRow doubles (x, y, z, 0) for the
-  // kernels: a partner's row is one aligned 32-byte read, and the rows the bonds reach take
-  // two thirds of the cache the alterable rows would.
-  static constexpr std::size_t kPackedRow = 4;
-  const double* packedPositions(const Particles& P);
+  // The positions the kernels read (every local particle's, rows of PackedPositions::kRow).
+  PackedPositions packed_;
 
   double E_ = 0, nu_ = 0, delta_ = 0, thickness_ = 1, density_ = 0, dt_ = 0;
   double criticalStretch_ = 0, damping_ = 0, spacing_ = 0;
   std::vector<double> notch_;  // pre-cracks: X1 Y1 X2 Y2 per segment (in the XY plane)
   int dim_ = 3;                // from the particles, known in setup
-
- private:
-  std::vector<double> packed_;  // packedPositions' rows, from its first 32-byte boundary
 };
 
 // Weight of a bond of reference length r0 in a horizon delta on a lattice of the given

@@ -74,8 +74,8 @@ class Pmb final : public PeriModel {
       for (std::size_t i = 0; i < P.owned(); ++i) std::fill_n(P.integ(i), 3, 0.0);
       return;
     }
-    const PmbView view{B.partners().data(), B.attr(0),        packedPositions(P),
-                       kPackedRow,          criticalStretch_, &B};
+    const PmbView view{B.partners().data(),   B.attr(0),        packed_.pack(P),
+                       PackedPositions::kRow, criticalStretch_, &B};
     const PmbKernel kernel = kernel_;
     const long n = static_cast<long>(P.owned());
 #pragma omp parallel for schedule(static)
