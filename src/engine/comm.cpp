@@ -165,6 +165,15 @@ long Comm::sum(long v) const {
   return r;
 }
 
+int Comm::nodeSize() const {
+  MPI_Comm node;
+  MPI_Comm_split_type(mpi(comm_), MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+  int size = 1;
+  MPI_Comm_size(node, &size);
+  MPI_Comm_free(&node);
+  return size;
+}
+
 bool Comm::any(bool v) const {
   int x = v ? 1 : 0, r = 0;
   allreduce(&x, &r, 1, MPI_INT, MPI_MAX, mpi(comm_));

@@ -44,6 +44,8 @@ class Comm {
   double min(double v) const;
   long sum(long v) const;
   bool any(bool v) const;
+  // Collective: how many of these ranks share this rank's node (its memory).
+  int nodeSize() const;
   double sum(ExactSum& acc) const;  // exact, order-independent global sum
   void exactSum(ExactSum& acc) const;
   // Several exact sums in one message; accs[k] holds the global sum after the call.

@@ -93,6 +93,7 @@ class Context {
   std::vector<char> broadcast(std::vector<char> data) const {
     return comm_.broadcast(std::move(data));
   }
+  int nodeSize() const { return comm_.nodeSize(); }  // collective: ranks on this one's node
 
   // Ends the run after this step (the reason is logged). Must be called on every rank
   // alike, i.e. decided from global reductions.

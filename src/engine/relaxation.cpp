@@ -526,8 +526,13 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
         ctx.log() << "quasi-static: assembled stiffness, " << m.unknowns() << " unknowns, "
                   << m.matrixNonzeros() << " nonzero entries (" << m.matrixStored()
                   << " stored, the bonds' zeros included), " << m.factorNonzeros()
-                  << " in its factor"
-                  << (outcome == StiffnessMatrix::Outcome::NotDefinite
+                  << " in its factor";
+      if (const auto s = m.twoThreadShares(); ctx.root() && !s.empty())
+        ctx.log() << ", solved on two threads (parts of " << std::lround(100 * s[0]) << " % and "
+                  << std::lround(100 * s[1]) << " % of the factor, " << std::lround(100 * s[2])
+                  << " % above them)";
+      if (ctx.root())
+        ctx.log() << (outcome == StiffnessMatrix::Outcome::NotDefinite
                           ? ", not positive definite: this load step relaxes with the diagonal "
                             "masses\n"
                           : "\n");

@@ -2,6 +2,7 @@
 
 #include <cholmod.h>
 #include <dlfcn.h>
+#include <omp.h>
 
 #include <algorithm>
 #include <cstring>
@@ -11,6 +12,7 @@
 
 #include "engine/bytes.hpp"
 #include "engine/context.hpp"
+#include "engine/supernodal_solve.hpp"
 
 namespace pdq {
 
@@ -25,59 +27,6 @@ using bytes::take;
 // whose solves are the faster there. The pattern, not the nonzeros, decides, so that a run
 // restarted with more interactions broken chooses as the first run did.
 constexpr double kSupernodalFill = 4.5;
-
-// x = K̂⁻¹ b (b in the unknowns' order) with a supernodal factor LLᵀ = PK̂Pᵀ whose values `lx` are
-// held in single precision (the arithmetic is double): the factor serves as the relaxation's
-// preconditioner, which converges on the residual computed in double whatever the factor's
-// rounding, and the solves, which stream the whole factor twice, read half the bytes
-// (docs/quasi-static.md, "Solves in single precision"). Every sum runs in a fixed order: the same
-// bits on any processor.
-[[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void solveSupernodal(
-    const cholmod_factor& L, const float* lx, const long* packed, const double* b, double* x,
-    double* y, double* w) {
-  const auto* perm = static_cast<const int*>(L.Perm);
-  const auto* super = static_cast<const int*>(L.super);
-  const auto* pi = static_cast<const int*>(L.pi);
-  const auto* rows = static_cast<const int*>(L.s);
-  const long n = static_cast<long>(L.n), nsuper = static_cast<long>(L.nsuper);
-  for (long k = 0; k < n; ++k) y[k] = b[perm[k]];
-  // Each supernode: columns k1..k1+nc−1 and nr rows, the first nc of them those columns',
-  // stored column by column; w holds the values at its rows.
-  for (long sn = 0; sn < nsuper; ++sn) {  // L y' = y
-    const long k1 = super[sn], nc = super[sn + 1] - k1, nr = pi[sn + 1] - pi[sn];
-    const float* B = lx + packed[sn];
-    const int* at = rows + pi[sn];
-    std::copy(y + k1, y + k1 + nc, w);
-    std::fill(w + nc, w + nr, 0.0);
-    for (long c = 0; c < nc; ++c) {
-      const float* col = B + c * nr - c * (c + 1) / 2;
-      const double wc = w[c] / col[c];
-      w[c] = wc;
-      for (long r = c + 1; r < nr; ++r) w[r] -= col[r] * wc;
-    }
-    std::copy(w, w + nc, y + k1);
-    for (long r = nc; r < nr; ++r) y[at[r]] += w[r];
-  }
-  for (long sn = nsuper - 1; sn >= 0; --sn) {  // Lᵀ y'' = y'
-    const long k1 = super[sn], nc = super[sn + 1] - k1, nr = pi[sn + 1] - pi[sn];
-    const float* B = lx + packed[sn];
-    const int* at = rows + pi[sn];
-    for (long r = 0; r < nr; ++r) w[r] = y[at[r]];
-    for (long c = nc - 1; c >= 0; --c) {
-      const float* col = B + c * nr - c * (c + 1) / 2;
-      double lane[8] = {0, 0, 0, 0, 0, 0, 0, 0};
-      long r = c + 1;
-      for (; r + 8 <= nr; r += 8)
-        for (int l = 0; l < 8; ++l) lane[l] += col[r + l] * w[r + l];
-      for (int l = 0; r < nr; ++r, ++l) lane[l] += col[r] * w[r];
-      w[c] = (w[c] - (((lane[0] + lane[1]) + (lane[2] + lane[3])) +
-                      ((lane[4] + lane[5]) + (lane[6] + lane[7])))) /
-             col[c];
-    }
-    std::copy(w, w + nc, y + k1);
-  }
-  for (long k = 0; k < n; ++k) x[perm[k]] = y[k];
-}
 
 void check(const cholmod_common& c, const char* what) {
   if (c.status < CHOLMOD_OK)
@@ -96,9 +45,9 @@ struct StiffnessMatrix::Factor {
   cholmod_factor* L = nullptr;   // analysed for K's pattern; factorised when `factorised`
   cholmod_dense* rhs = nullptr;  // the solves' right-hand side, and their workspaces
   cholmod_dense *x = nullptr, *ys = nullptr, *e = nullptr;
-  std::vector<float> lx;          // a supernodal factor's values, for the solves
-  std::vector<long> packed;       // where each supernode starts in lx
-  std::vector<double> sol, y, w;  // a solution, and the solves' workspaces
+  SupernodalSolve solver;   // a supernodal factor's solves
+  int solveThreads = 1;     // theirs: two where another rank of this node waits for them
+  std::vector<double> sol;  // a solution
   // Per gathered entry of the last assembly: its key, its row's unknown and its place in
   // K's values (−1: not an unknown's); per unknown, its diagonal's place.
   std::vector<StiffnessEntry> keys;
@@ -140,6 +89,12 @@ long StiffnessMatrix::unknowns() const { return factor_ ? factor_->unknowns : 0;
 long StiffnessMatrix::matrixNonzeros() const { return factor_ ? factor_->entries : 0; }
 long StiffnessMatrix::matrixStored() const { return factor_ ? factor_->stored : 0; }
 long StiffnessMatrix::factorNonzeros() const { return factor_ ? factor_->fill : 0; }
+std::vector<double> StiffnessMatrix::twoThreadShares() const {
+  if (!factor_ || !factor_->L || !factor_->L->is_super || factor_->solveThreads < 2) return {};
+  const auto s = factor_->solver.shares();
+  if (s[0] == 0) return {};
+  return {s.begin(), s.end()};
+}
 
 StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<const Gid> gids,
                                                     int dofs, std::span<const unsigned char> free,
@@ -159,11 +114,14 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
   std::vector<char> rows;
   append(rows, entries.data(), entries.size());
   const std::vector<char> gathered = ctx.gather(rows, starts);
+  // Rank 0's solves may take a second core of its node: the node's other ranks wait for them.
+  const int nodeRanks = ctx.nodeSize();
 
   std::vector<char> reply;  // rank 0: whether K̂ is positive definite, then the sorted IDs
   if (ctx.root()) {
     if (!factor_) factor_ = std::make_unique<Factor>();
     Factor& F = *factor_;
+    F.solveThreads = std::max(omp_get_max_threads(), nodeRanks);
     std::vector<Gid> all;
     std::vector<unsigned char> isFree;
     std::vector<double> diag;
@@ -337,24 +295,12 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
       check(F.c, "factorising the matrix");
       bool ok = F.c.status == CHOLMOD_OK && F.L->minor == F.L->n && unknowns > 0;
       if (F.L->is_super) {
-        // Each supernode's columns from their diagonal down (the rows above it, in its
-        // dense block, are not the factor's), one after another.
-        const auto* x = static_cast<const double*>(F.L->x);
-        const auto* px = static_cast<const int*>(F.L->px);
-        const auto* pi = static_cast<const int*>(F.L->pi);
-        const auto* super = static_cast<const int*>(F.L->super);
-        F.packed.assign(F.L->nsuper, 0);
-        F.lx.clear();
-        long most = 0;
-        for (std::size_t sn = 0; sn < F.L->nsuper; ++sn) {
-          F.packed[sn] = static_cast<long>(F.lx.size());
-          const long nc = super[sn + 1] - super[sn], nr = pi[sn + 1] - pi[sn];
-          for (long c = 0; c < nc; ++c)
-            F.lx.insert(F.lx.end(), x + px[sn] + c * nr + c, x + px[sn] + (c + 1) * nr);
-          most = std::max(most, nr);
-        }
-        F.y.resize(F.L->n);
-        F.w.resize(static_cast<std::size_t>(most));
+        const SupernodalLayout layout{
+            static_cast<long>(F.L->n),          static_cast<long>(F.L->nsuper),
+            static_cast<const int*>(F.L->Perm), static_cast<const int*>(F.L->super),
+            static_cast<const int*>(F.L->pi),   static_cast<const int*>(F.L->s),
+            static_cast<const int*>(F.L->px)};
+        F.solver.assign(layout, static_cast<const double*>(F.L->x));
       } else {  // LDLᵀ: D is each column's first entry of the simplicial factor
         const auto* Lp = static_cast<const int*>(F.L->p);
         const auto* Lx = static_cast<const double*>(F.L->x);
@@ -407,7 +353,7 @@ double StiffnessMatrix::solve(Context& ctx, std::span<const double> b, std::span
     const double* s = nullptr;
     if (F.L->is_super) {
       F.sol.resize(static_cast<std::size_t>(F.unknowns));
-      solveSupernodal(*F.L, F.lx.data(), F.packed.data(), r, F.sol.data(), F.y.data(), F.w.data());
+      F.solver.solve(r, F.sol.data(), F.solveThreads);
       s = F.sol.data();
     } else {
       cholmod_solve2(CHOLMOD_A, F.L, F.rhs, nullptr, &F.x, nullptr, &F.ys, &F.e, &F.c);

@@ -52,6 +52,9 @@ class StiffnessMatrix {
   long matrixNonzeros() const;
   long matrixStored() const;
   long factorNonzeros() const;
+  // Rank 0, when the solves take two threads: the shares of the factor in the two parts of
+  // its elimination tree and above them (engine/supernodal_solve.hpp); else empty.
+  std::vector<double> twoThreadShares() const;
 
  private:
   struct Factor;
