@@ -53,8 +53,8 @@ template <int C>
 
 // s[k] = Σ_r col[k][r] w[r] over rows [r, nr), in eight lanes of rows added as pairs.
 template <int C>
-[[gnu::always_inline]] inline void backwardColumns(const float* const* col, const double* w,
-                                                   long r, long nr, double* s) {
+[[gnu::always_inline]] inline void backwardColumns(const float* const* col, const double* w, long r,
+                                                   long nr, double* s) {
   V8d a[C];
   for (int k = 0; k < C; ++k) a[k] = V8d{};
   for (; r + 8 <= nr; r += 8) {
@@ -69,27 +69,36 @@ template <int C>
   for (int l = 0; r < nr; ++r, ++l)
     for (int k = 0; k < C; ++k) a[k][l] += col[k][r] * w[r];
   for (int k = 0; k < C; ++k)
-    s[k] = ((a[k][0] + a[k][1]) + (a[k][2] + a[k][3])) + ((a[k][4] + a[k][5]) + (a[k][6] + a[k][7]));
+    s[k] =
+        ((a[k][0] + a[k][1]) + (a[k][2] + a[k][3])) + ((a[k][4] + a[k][5]) + (a[k][6] + a[k][7]));
 }
 
 // The same for a block of 1 to kBlock columns.
 [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void forwardBlock(
     long cols, const float* const* col, const double* wc, double* w, long r, long nr) {
   switch (cols) {
-    case 1: return forwardColumns<1>(col, wc, w, r, nr);
-    case 2: return forwardColumns<2>(col, wc, w, r, nr);
-    case 3: return forwardColumns<3>(col, wc, w, r, nr);
-    default: return forwardColumns<kBlock>(col, wc, w, r, nr);
+    case 1:
+      return forwardColumns<1>(col, wc, w, r, nr);
+    case 2:
+      return forwardColumns<2>(col, wc, w, r, nr);
+    case 3:
+      return forwardColumns<3>(col, wc, w, r, nr);
+    default:
+      return forwardColumns<kBlock>(col, wc, w, r, nr);
   }
 }
 
 [[gnu::target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")]] void backwardBlock(
     long cols, const float* const* col, const double* w, long r, long nr, double* s) {
   switch (cols) {
-    case 1: return backwardColumns<1>(col, w, r, nr, s);
-    case 2: return backwardColumns<2>(col, w, r, nr, s);
-    case 3: return backwardColumns<3>(col, w, r, nr, s);
-    default: return backwardColumns<kBlock>(col, w, r, nr, s);
+    case 1:
+      return backwardColumns<1>(col, w, r, nr, s);
+    case 2:
+      return backwardColumns<2>(col, w, r, nr, s);
+    case 3:
+      return backwardColumns<3>(col, w, r, nr, s);
+    default:
+      return backwardColumns<kBlock>(col, w, r, nr, s);
   }
 }
 
@@ -147,6 +156,12 @@ void SupernodalSolve::assign(const SupernodalLayout& L, const double* values) {
       if (path < best) best = path, cut_ = m, top_ = p;
     }
   if (5 * best > 4 * work(0, nsuper_)) cut_ = top_ = 0;
+  // Room for part two's updates of the rows above both: the helper thread allocates nothing.
+  std::size_t later = 0;
+  for (long sn = cut_; sn < top_; ++sn)
+    for (long r = pi_[sn]; r < pi_[sn + 1]; ++r) later += rows_[r] >= super_[top_];
+  later_.clear();
+  later_.reserve(later);
 }
 
 std::array<double, 3> SupernodalSolve::shares() const {
