@@ -247,6 +247,9 @@ class Integrator {
   // model's forces reach no further than the nearby cells (one force pass).
   std::vector<double> gershgorinRows(Context& ctx, const std::function<void()>& forces,
                                      std::vector<StiffnessEntry>* entries = nullptr);
+  // gershgorinRows from the model's own stiffness (Model::referenceStiffness), with
+  // `entries` where given; false when the model states none.
+  bool statedRows(Context& ctx, std::vector<double>& rows, std::vector<StiffnessEntry>* entries);
   // A finite-difference probe of the stiffness at the current state: f = −K u for a
   // displacement field u given at every local particle (forces and moments of the owned
   // particles); the state is put back after each probe. `passes`, when given, is set to

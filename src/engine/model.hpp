@@ -78,6 +78,18 @@ class Model {
   // quasi-static solver's stiffness probes then colour the bond graph instead of the cells
   // (engine/bond_colouring.hpp), far fewer probes.
   virtual bool forcesFromBonds() const { return false; }
+  // The stiffness at the reference configuration (positions X, the reference orientation)
+  // with the interactions' state as it is, which the quasi-static solver's fictitious masses
+  // and assembled stiffness need, from a model that can state it: for every owned particle
+  // i, add(i, i, K) and then add(i, j, K) for each particle j it interacts with (local
+  // index; each once), K the nd × nd block −∂F_i/∂u_j row by row, F the force (and moment)
+  // columns the model writes and u the DOFs of motion(): translations, then rotations about
+  // the global axes. Where an interaction is stiffer pulled than pushed (damaged in tension
+  // only) it states the mean of the two, as central differences give it. The same answer
+  // on every rank; false (the default): the solver probes the forces by finite differences.
+  using StiffnessBlocks =
+      std::function<void(std::size_t i, std::size_t j, std::span<const double> K)>;
+  virtual bool referenceStiffness(const Context&, const StiffnessBlocks&) const { return false; }
 
   virtual void setup(Context&) {}
   virtual void prepare(Context&) {}

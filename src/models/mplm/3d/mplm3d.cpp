@@ -146,6 +146,8 @@ class Mplm3d final : public Model {
       evalStart_[i + 1] = static_cast<std::uint32_t>(evals_.size());
       gamma = std::max({gamma, gt / in_.mass[i], gr / in_.inertia[i]});
     }
+    unitRows_.resize(geo_.size());
+    for (std::size_t g = 0; g < geo_.size(); ++g) unitRows_[g] = unitRows(geo_[g]);
     omegaMax_ = highestFrequency(ctx);
     const double c0 = std::sqrt(par_.E / par_.rho);
     const double thesisDt = par_.s / (std::numbers::pi * c0);
@@ -242,6 +244,47 @@ class Mplm3d final : public Model {
   void bodies(const Context& ctx, std::span<Body> owned) const override {
     constexpr int bit[6] = {FIX_X, FIX_Y, FIX_Z, FIX_RX, FIX_RY, FIX_RZ};
     in_.bodies(ctx.particles, owned, bit, LOAD_X, DISP_X, REST_Y, FIX_Y);
+  }
+
+  // The stiffness at the reference configuration: each interaction's small-form matrix (the
+  // co-rotational form's tangent there) after its damage, the axial term the mean of the
+  // pulled and the pushed one; a bar's axial term where its plastic strain leaves it elastic
+  // there, and in the co-rotational form the geometric term of the axial force that plastic
+  // strain leaves.
+  bool referenceStiffness(const Context& ctx, const StiffnessBlocks& add) const override {
+    const Particles& P = ctx.particles;
+    const Bonds& B = ctx.bonds;
+    std::vector<double> own(36), blocks;
+    for (std::size_t i = 0; i < P.owned(); ++i) {
+      blocks.assign(36 * (B.end(i) - B.begin(i)), 0.0);
+      std::fill(own.begin(), own.end(), 0.0);
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const Interaction& g = geo_[geoOf_[b]];
+        const Stiffness& t = types_[g.type];
+        const Keeps keep = referenceKeeps(t, g, B.attr(b));
+        const UnitRows& u = unitRows_[geoOf_[b]];
+        double* ij = &blocks[36 * (b - B.begin(i))];
+        for (int r = 0; r < 6; ++r)
+          for (int c = 0; c < 12; ++c) {
+            const int at = 12 * r + c;
+            const double v = keep.axial * t.ka * u.axial[at] +
+                             keep.bend * (t.kb * u.bend[at] + t.kt * u.twist[at]);
+            (c < 6 ? own[6 * r + c] : ij[6 * r + c - 6]) += v;
+          }
+        // f_i = N e1 turns with the chord: ∂f_i/∂u_j = (N/d)(I − n0 n0ᵀ).
+        for (int p = 0; p < 3 && keep.force != 0; ++p)
+          for (int q = 0; q < 3; ++q) {
+            const double v = keep.force * g.invL0 * ((p == q ? 1.0 : 0.0) - g.n0[p] * g.n0[q]);
+            own[6 * p + q] += v;
+            ij[6 * p + q] -= v;
+          }
+      }
+      add(i, i, own);
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b)
+        add(i, static_cast<std::size_t>(B.partner(b)),
+            std::span<const double>(&blocks[36 * (b - B.begin(i))], 36));
+    }
+    return true;
   }
 
   std::vector<std::string> fields() const override {
@@ -627,6 +670,51 @@ class Mplm3d final : public Model {
 
   static Quat orientation(const double* a) { return {a[QW], a[QX], a[QY], a[QZ]}; }
 
+  // An interaction end's rows of its 12 × 12 small-form matrix (u, θ of i, then of j),
+  // −∂(f_i, m_i)/∂(u_i, θ_i, u_j, θ_j) row by row, for unit axial, bending and torsional
+  // constants: its stiffness is a sum of the three, scaled.
+  struct UnitRows {
+    std::array<double, 72> axial, bend, twist;
+  };
+  UnitRows unitRows(const Interaction& g) const {
+    UnitRows u;
+    Stiffness unit[3];
+    unit[0].ka = unit[1].kb = unit[2].kt = 1;
+    std::array<double, 72>* rows[3] = {&u.axial, &u.bend, &u.twist};
+    for (int c = 0; c < 12; ++c) {
+      double x[12] = {};
+      x[c] = 1;
+      const Vec d{x[6] - x[0], x[7] - x[1], x[8] - x[2]};
+      const Chord ch = smallChord(g, d, rowVec(x, 3), rowVec(x, 9));
+      for (int k = 0; k < 3; ++k) {
+        const EndLoad e = elasticForce(g, unit[k], ch, par_.law, nullptr, false);
+        for (int r = 0; r < 3; ++r) {
+          (*rows[k])[12 * r + c] = -e.f[r];
+          (*rows[k])[12 * (r + 3) + c] = -e.m[r];
+        }
+      }
+    }
+    return u;
+  }
+  // What an interaction keeps at the reference configuration in its state: the factors of
+  // its axial and its bending and torsional terms, and the axial force a bar's plastic
+  // strain leaves there (co-rotational form; 0 otherwise).
+  struct Keeps {
+    double axial = 1, bend = 1, force = 0;
+  };
+  Keeps referenceKeeps(const Stiffness& t, const Interaction& g, const double* state) const {
+    Keeps k;
+    if (t.kind == Kind::Concrete) {
+      k.bend = 1 - std::max(state[OMEGA_T], state[OMEGA_C]);
+      k.axial = 0.5 * (k.bend + (par_.law.crushing ? 1 - state[OMEGA_C] : 1.0));
+    } else if (t.kind == Kind::Bar) {
+      const double p = std::fabs(state[PLASTIC]);
+      k.axial = p < t.epsY ? 1.0 : (p > t.epsY ? 0.0 : 0.5);  // beyond: it yields either way
+      if (corot_) k.force = -t.ka * mplm::plasticStrain(0, state[PLASTIC], t.epsY) * g.L0;
+    }
+    return k;
+  }
+
   // Each local particle's (owned and ghosts) rotation matrix in the co-rotational form, its
   // rotation vector θ = log q in the small form: before the scalar uses of chord() (the
   // potential, the stresses) and the small form's force loop.
@@ -719,6 +807,7 @@ class Mplm3d final : public Model {
   std::vector<Interaction> geo_;      // the distinct geometries of the interaction ends
   std::vector<Stiffness> types_;      // the distinct constants of the interactions
   std::vector<std::uint32_t> geoOf_;  // per bond (same index as ctx.bonds): its geometry
+  std::vector<UnitRows> unitRows_;    // per geometry
   // The interactions a particle evaluates, evals_[evalStart_[i]] to evals_[evalStart_[i + 1]]
   // in bond order: its bond, the geometry as the end of smaller ID holds it, whether the
   // particle is that end, and the record that receives the share of the end of larger ID
