@@ -5,7 +5,7 @@
 # libFuzzer alone, for fuzz/)
 set -euo pipefail
 need=(cmake g++ make pkg-config libopenmpi-dev openmpi-bin libcli11-dev libtomlplusplus-dev
-      libfmt-dev libgtest-dev libcairo2-dev libsuitesparse-dev libopenblas0-serial)
+      libfmt-dev libgtest-dev libcairo2-dev libsuitesparse-dev libopenblas0-pthread)
 case "${1:-build}" in
   test) need+=(lammps clang-14 libclang-rt-14-dev) ;;
   viz) need+=(lammps paraview python3-paraview clang-14 libclang-rt-14-dev) ;;

@@ -570,6 +570,9 @@ Integrator::Relaxed Integrator::relax(Context& ctx, const Solver& solver, const 
                   << m.matrixNonzeros() << " nonzero entries (" << m.matrixStored()
                   << " stored, the bonds' zeros included), " << m.factorNonzeros()
                   << " in its factor";
+      if (const double f = m.twoThreadFactorisation(); ctx.root() && f > 0)
+        ctx.log() << ", factorised on two threads (" << std::lround(100 * f)
+                  << " % of its operations in supernodes cut in two)";
       if (const auto s = m.twoThreadShares(); ctx.root() && !s.empty())
         ctx.log() << ", solved on two threads (parts of " << std::lround(100 * s[0]) << " % and "
                   << std::lround(100 * s[1]) << " % of the factor, " << std::lround(100 * s[2])

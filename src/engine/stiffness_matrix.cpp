@@ -1,7 +1,6 @@
 #include "engine/stiffness_matrix.hpp"
 
 #include <cholmod.h>
-#include <dlfcn.h>
 #include <omp.h>
 
 #include <algorithm>
@@ -12,6 +11,8 @@
 
 #include "engine/bytes.hpp"
 #include "engine/context.hpp"
+#include "engine/helper_thread.hpp"
+#include "engine/supernodal_factor.hpp"
 #include "engine/supernodal_solve.hpp"
 
 namespace pdq {
@@ -22,11 +23,20 @@ using bytes::take;
 
 // A factor that fills in over this many times the matrix's pattern (its stored entries, the
 // zeros of the bonds' pattern included: 2D lattices about 3.9, 3D ones from about 5.6) is
-// supernodal, its dense blocks factorised by BLAS: a 3D member's factorisation takes a
-// fraction of the simplicial one's time. Sparser ones (2D lattices) stay simplicial LDLᵀ,
+// supernodal, its dense blocks factorised by BLAS (engine/supernodal_factor.hpp, on two
+// threads where rank 0 has a helper): a 3D member's factorisation takes a fraction of the
+// simplicial one's time. Sparser ones (2D lattices) stay simplicial LDLᵀ,
 // whose solves are the faster there. The pattern, not the nonzeros, decides, so that a run
 // restarted with more interactions broken chooses as the first run did.
 constexpr double kSupernodalFill = 4.5;
+
+// A supernodal factor's structure as CHOLMOD's analysis lays it out.
+SupernodalLayout layout(const cholmod_factor& L) {
+  return {static_cast<long>(L.n),          static_cast<long>(L.nsuper),
+          static_cast<const int*>(L.Perm), static_cast<const int*>(L.super),
+          static_cast<const int*>(L.pi),   static_cast<const int*>(L.s),
+          static_cast<const int*>(L.px)};
+}
 
 void check(const cholmod_common& c, const char* what) {
   if (c.status < CHOLMOD_OK)
@@ -35,18 +45,21 @@ void check(const cholmod_common& c, const char* what) {
 }
 }  // namespace
 
-// CHOLMOD's simplicial LDLᵀ, or supernodal LLᵀ where the factor fills in much (SuiteSparse):
-// its ordering tries approximate minimum degree and, where that fills in much (3D
-// lattices), nested dissection (METIS), and keeps the better; its analysis tells the size
-// of the factor before the factorisation.
+// CHOLMOD's simplicial LDLᵀ (SuiteSparse), or supernodal LLᵀ on its analysis where the
+// factor fills in much: its ordering tries approximate minimum degree and, where that fills in much
+// (3D lattices), nested dissection (METIS), and keeps the better; its analysis tells the size of
+// the factor before the factorisation.
 struct StiffnessMatrix::Factor {
   cholmod_common c;
   cholmod_sparse* K = nullptr;   // K̂'s lower half, compressed columns
-  cholmod_factor* L = nullptr;   // analysed for K's pattern; factorised when `factorised`
+  cholmod_factor* L = nullptr;   // analysed for K's pattern; factorised when simplicial
   cholmod_dense* rhs = nullptr;  // the solves' right-hand side, and their workspaces
   cholmod_dense *x = nullptr, *ys = nullptr, *e = nullptr;
-  SupernodalSolve solver;   // a supernodal factor's solves
-  int solveThreads = 1;     // theirs: two where another rank of this node waits for them
+  SupernodalFactor numeric;  // a supernodal factor's factorisation
+  SupernodalSolve solver;    // and solves
+  // Their second thread, where another rank of this node waits for them or the run has
+  // OpenMP threads.
+  std::unique_ptr<HelperThread> helper;
   std::vector<double> sol;  // a solution
   // Per gathered entry of the last assembly: its key, its row's unknown and its place in
   // K's values (−1: not an unknown's); per unknown, its diagonal's place.
@@ -63,11 +76,6 @@ struct StiffnessMatrix::Factor {
     cholmod_start(&c);
     c.print = 0;  // its warnings (a matrix not positive definite) are handled here
     c.final_ll = 0;
-    // Where the system's BLAS is a threaded OpenBLAS, one thread: the supernodal factor's
-    // bits must not depend on how many threads it finds.
-    using SetThreads = void (*)(int);
-    if (auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
-      set(1);
   }
   ~Factor() {
     cholmod_free_sparse(&K, &c);
@@ -90,10 +98,17 @@ long StiffnessMatrix::matrixNonzeros() const { return factor_ ? factor_->entries
 long StiffnessMatrix::matrixStored() const { return factor_ ? factor_->stored : 0; }
 long StiffnessMatrix::factorNonzeros() const { return factor_ ? factor_->fill : 0; }
 std::vector<double> StiffnessMatrix::twoThreadShares() const {
-  if (!factor_ || !factor_->L || !factor_->L->is_super || factor_->solveThreads < 2) return {};
+  if (!factor_ || !factor_->L || !factor_->L->is_super || !factor_->helper) return {};
   const auto s = factor_->solver.shares();
   if (s[0] == 0) return {};
   return {s.begin(), s.end()};
+}
+
+double StiffnessMatrix::twoThreadFactorisation() const {
+  if (!factor_ || !factor_->L || !factor_->L->is_super || !factor_->helper ||
+      !SupernodalFactor::blasFromTwoThreads())
+    return 0;
+  return factor_->numeric.cutShare();
 }
 
 StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<const Gid> gids,
@@ -121,7 +136,8 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
   if (ctx.root()) {
     if (!factor_) factor_ = std::make_unique<Factor>();
     Factor& F = *factor_;
-    F.solveThreads = std::max(omp_get_max_threads(), nodeRanks);
+    if (std::max(omp_get_max_threads(), nodeRanks) > 1 && !F.helper)
+      F.helper = std::make_unique<HelperThread>();
     std::vector<Gid> all;
     std::vector<unsigned char> isFree;
     std::vector<double> diag;
@@ -287,21 +303,20 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
         F.c.supernodal = CHOLMOD_SUPERNODAL;
         F.L = cholmod_analyze_p(K, perm.data(), nullptr, 0, &F.c);
         check(F.c, "analysing the matrix's supernodes");
+        F.numeric.analyse(layout(*F.L), static_cast<const int*>(K->p),
+                          static_cast<const int*>(K->i));
       }
     }
     Outcome outcome = Outcome::TooLarge;
     if (static_cast<double>(F.fill) <= maxFill * static_cast<double>(F.entries)) {
-      cholmod_factorize(K, F.L, &F.c);
-      check(F.c, "factorising the matrix");
-      bool ok = F.c.status == CHOLMOD_OK && F.L->minor == F.L->n && unknowns > 0;
+      bool ok = unknowns > 0;
       if (F.L->is_super) {
-        const SupernodalLayout layout{
-            static_cast<long>(F.L->n),          static_cast<long>(F.L->nsuper),
-            static_cast<const int*>(F.L->Perm), static_cast<const int*>(F.L->super),
-            static_cast<const int*>(F.L->pi),   static_cast<const int*>(F.L->s),
-            static_cast<const int*>(F.L->px)};
-        F.solver.assign(layout, static_cast<const double*>(F.L->x));
+        ok = ok && F.numeric.factorise(static_cast<const double*>(K->x), F.helper.get());
+        if (ok) F.solver.assign(layout(*F.L), F.numeric.values());
       } else {  // LDLᵀ: D is each column's first entry of the simplicial factor
+        cholmod_factorize(K, F.L, &F.c);
+        check(F.c, "factorising the matrix");
+        ok = ok && F.c.status == CHOLMOD_OK && F.L->minor == F.L->n;
         const auto* Lp = static_cast<const int*>(F.L->p);
         const auto* Lx = static_cast<const double*>(F.L->x);
         for (long j = 0; ok && j < unknowns; ++j) ok = Lx[Lp[j]] > 0;
@@ -353,7 +368,7 @@ double StiffnessMatrix::solve(Context& ctx, std::span<const double> b, std::span
     const double* s = nullptr;
     if (F.L->is_super) {
       F.sol.resize(static_cast<std::size_t>(F.unknowns));
-      F.solver.solve(r, F.sol.data(), F.solveThreads);
+      F.solver.solve(r, F.sol.data(), F.helper.get());
       s = F.sol.data();
     } else {
       cholmod_solve2(CHOLMOD_A, F.L, F.rhs, nullptr, &F.x, nullptr, &F.ys, &F.e, &F.c);

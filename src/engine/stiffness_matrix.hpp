@@ -1,9 +1,10 @@
 #pragma once
 // The quasi-static solver's assembled stiffness (docs/quasi-static.md, "Assembled
-// stiffness"): entries K_ij of the free degrees of freedom, probed by finite differences on
-// every rank, gathered on rank 0, made symmetric and factorised there (CHOLMOD's sparse
-// LDLᵀ, its ordering by minimum degree or nested dissection; a supernodal factor's solves
-// read a single-precision copy of it), and solves with it: a right-hand side given per owned
+// stiffness"): entries K_ij of the free degrees of freedom, stated by the model or probed by
+// finite differences on every rank, gathered on rank 0, made symmetric and factorised there
+// (CHOLMOD's ordering by minimum degree or nested dissection and its sparse LDLᵀ; a factor
+// that fills in much is supernodal, factorised by engine/supernodal_factor.hpp, its solves
+// reading a single-precision copy of it), and solves with it: a right-hand side given per owned
 // DOF on every rank, the solution sent back to each. Rows and columns are ordered
 // by global ID, so the matrix, its factors and every solution are the same bits on any number of
 // ranks.
@@ -55,6 +56,9 @@ class StiffnessMatrix {
   // Rank 0, when the solves take two threads: the shares of the factor in the two parts of
   // its elimination tree and above them (engine/supernodal_solve.hpp); else empty.
   std::vector<double> twoThreadShares() const;
+  // Rank 0, when the factorisation takes two threads: the share of its operations in
+  // supernodes cut in two (engine/supernodal_factor.hpp); else 0.
+  double twoThreadFactorisation() const;
 
  private:
   struct Factor;

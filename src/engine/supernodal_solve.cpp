@@ -1,15 +1,10 @@
 #include "engine/supernodal_solve.hpp"
 
-#include <pthread.h>
-#include <sched.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <condition_variable>
 #include <cstring>
 #include <functional>
-#include <mutex>
-#include <thread>
+
+#include "engine/helper_thread.hpp"
 
 namespace pdq {
 namespace {
@@ -225,77 +220,18 @@ void SupernodalSolve::backward(long s0, long s1, std::vector<double>& ws) {
   }
 }
 
-// The thread that takes part two: it sleeps between passes, and may run on any core of the
-// node (MPI binds each rank to one; the other ranks sleep while rank 0 solves).
-class SupernodalSolve::Helper {
- public:
-  Helper() : thread_([this] { loop(); }) {
-    cpu_set_t all;
-    CPU_ZERO(&all);
-    const long cpus = sysconf(_SC_NPROCESSORS_ONLN);
-    for (long c = 0; c < cpus && c < CPU_SETSIZE; ++c) CPU_SET(c, &all);
-    pthread_setaffinity_np(thread_.native_handle(), sizeof all, &all);  // best effort
-  }
-  ~Helper() {
-    {
-      std::lock_guard<std::mutex> lock(m_);
-      quit_ = true;
-    }
-    cv_.notify_all();
-    thread_.join();
-  }
-  void start(std::function<void()> job) {
-    {
-      std::lock_guard<std::mutex> lock(m_);
-      job_ = std::move(job);
-    }
-    cv_.notify_all();
-  }
-  void finish() {
-    std::unique_lock<std::mutex> lock(m_);
-    cv_.wait(lock, [this] { return !job_; });
-  }
-
- private:
-  void loop() {
-    std::unique_lock<std::mutex> lock(m_);
-    for (;;) {
-      cv_.wait(lock, [this] { return quit_ || job_; });
-      if (quit_) return;
-      lock.unlock();
-      job_();
-      lock.lock();
-      job_ = nullptr;
-      cv_.notify_all();
-    }
-  }
-  std::mutex m_;
-  std::condition_variable cv_;
-  std::function<void()> job_;
-  bool quit_ = false;
-  std::thread thread_;  // last: started once the rest is made
-};
-
 SupernodalSolve::SupernodalSolve() = default;
 SupernodalSolve::~SupernodalSolve() = default;
 
-void SupernodalSolve::solve(const double* b, double* x, int threads) {
+void SupernodalSolve::solve(const double* b, double* x, HelperThread* helper) {
   for (long k = 0; k < n_; ++k) y_[k] = b[perm_[k]];
   // Part two's updates of the rows above both parts wait for part one's: the order in which
   // one thread adds them.
   const int limit = top_ < nsuper_ ? super_[top_] : static_cast<int>(n_);
   later_.clear();
-  const bool two = threads > 1 && cut_ < top_;
-  if (two && !helper_) helper_ = std::make_unique<Helper>();
+  HelperThread* two = cut_ < top_ ? helper : nullptr;
   auto parts = [&](const std::function<void()>& one, const std::function<void()>& other) {
-    if (!two) {
-      one();
-      other();
-      return;
-    }
-    helper_->start(other);
-    one();
-    helper_->finish();
+    inTwo(two, one, other);
   };
   parts([&] { forward(0, cut_, w0_, nullptr, 0); },
         [&] { forward(cut_, top_, w1_, &later_, limit); });

@@ -10,10 +10,11 @@
 // parts at once ("Two parts of the elimination tree"). Every sum runs in an order fixed by
 // the factor alone: the same bits with one thread or two, on any processor.
 #include <array>
-#include <memory>
 #include <vector>
 
 namespace pdq {
+
+class HelperThread;
 
 // A supernodal factor's arrays, as CHOLMOD's cholmod_factor holds them (read, not kept).
 struct SupernodalLayout {
@@ -35,9 +36,9 @@ class SupernodalSolve {
   // finds the two parts (none when the tree has no cut that would save a fifth of a
   // solve's work).
   void assign(const SupernodalLayout& L, const double* values);
-  // x = K⁻¹ b, both in the unknowns' order; with `threads` over 1 and the tree cut, part
-  // two on a second thread.
-  void solve(const double* b, double* x, int threads);
+  // x = K⁻¹ b, both in the unknowns' order; with a helper and the tree cut, part two on the
+  // helper's thread.
+  void solve(const double* b, double* x, HelperThread* helper);
   // The shares of the factor's entries in part one, part two and above them (all in the
   // last when the tree is not cut).
   std::array<double, 3> shares() const;
@@ -61,8 +62,6 @@ class SupernodalSolve {
   long cut_ = 0, top_ = 0;           // parts [0, cut_) and [cut_, top_); [top_, nsuper_) after
   std::vector<double> y_, w0_, w1_;  // the solve's unknowns (factor order) and workspaces
   std::vector<Deferred> later_;
-  class Helper;
-  std::unique_ptr<Helper> helper_;  // made at the first solve on two threads
 };
 
 }  // namespace pdq
