@@ -126,9 +126,29 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
   append(mine, fallback.data(), n * dofs);
   std::vector<std::size_t> starts;
   const std::vector<char> particles = ctx.gather(mine, starts);
+  // The entries, or their values alone where every rank sends the same particles, free
+  // DOFs and entries as the last time and rank 0 has placed those.
+  const bool sameKeys =
+      std::ranges::equal(gids, sentGids_) && std::ranges::equal(free, sentFree_) &&
+      std::ranges::equal(entries, sentKeys_, [](const Entry& x, const Entry& y) {
+        return x.row == y.row && x.col == y.col && x.rowDof == y.rowDof && x.colDof == y.colDof;
+      });
+  const bool placed = !ctx.root() || (factor_ && factor_->K && !factor_->placed.empty());
+  const bool valuesOnly = !ctx.any(!(sameKeys && placed));
   std::vector<char> rows;
-  append(rows, entries.data(), entries.size());
+  if (valuesOnly) {
+    std::vector<double> values(entries.size());
+    std::ranges::transform(entries, values.begin(), &Entry::value);
+    append(rows, values.data(), values.size());
+  } else {
+    append(rows, entries.data(), entries.size());
+  }
   const std::vector<char> gathered = ctx.gather(rows, starts);
+  if (!valuesOnly) {
+    sentGids_.assign(gids.begin(), gids.end());
+    sentFree_.assign(free.begin(), free.end());
+    sentKeys_ = entries;
+  }
   // Rank 0's solves may take a second core of its node: the node's other ranks wait for them.
   const int nodeRanks = ctx.nodeSize();
 
@@ -176,16 +196,25 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
     // (max, min), where K_ji's half joins it; two terms add up to the same bits in either
     // order, so the ranks' order does not matter. A diagonal entry is whole, and the shift
     // (or the fallback of an empty row) comes after it.
-    const std::size_t nEntries = gathered.size() / sizeof(Entry);
-    std::vector<Entry> got(nEntries);
-    if (nEntries > 0) std::memcpy(got.data(), gathered.data(), gathered.size());
+    const std::size_t nEntries = gathered.size() / (valuesOnly ? sizeof(double) : sizeof(Entry));
+    std::vector<Entry> got(valuesOnly ? 0 : nEntries);
+    std::vector<double> value(nEntries);
+    if (valuesOnly) {
+      if (nEntries != F.placed.size() || F.keyRows != F.row)
+        throw std::logic_error("stiffness matrix: the entries' values do not fit their places");
+      if (nEntries > 0) std::memcpy(value.data(), gathered.data(), gathered.size());
+    } else {
+      if (nEntries > 0) std::memcpy(got.data(), gathered.data(), gathered.size());
+      for (std::size_t e = 0; e < nEntries; ++e) value[e] = got[e].value;
+    }
     // The entries of a later probe come in the same order (the bonds' pattern, the same
     // particles): each goes straight to its place in K̂, found the first time.
     const bool again =
-        F.K && F.placed.size() == nEntries && F.keyRows == F.row &&
-        std::equal(got.begin(), got.end(), F.keys.begin(), [](auto& x, auto& y) {
-          return x.row == y.row && x.col == y.col && x.rowDof == y.rowDof && x.colDof == y.colDof;
-        });
+        valuesOnly ||
+        (F.K && F.placed.size() == nEntries && F.keyRows == F.row &&
+         std::equal(got.begin(), got.end(), F.keys.begin(), [](auto& x, auto& y) {
+           return x.row == y.row && x.col == y.col && x.rowDof == y.rowDof && x.colDof == y.colDof;
+         }));
     cholmod_sparse* K = nullptr;
     if (again) {
       K = cholmod_copy_sparse(F.K, &F.c);
@@ -202,8 +231,8 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
       for (std::size_t e = 0; e < nEntries; ++e) {
         const long at = F.placed[e];
         if (at < 0) continue;
-        if (got[e].value != 0) hasRow[F.rowOf[e]] = 1;
-        put(at, at == F.diagonal[F.rowOf[e]] ? got[e].value : got[e].value / 2);
+        if (value[e] != 0) hasRow[F.rowOf[e]] = 1;
+        put(at, at == F.diagonal[F.rowOf[e]] ? value[e] : value[e] / 2);
       }
       for (std::size_t k = 0; k < F.total; ++k) {
         const long i = F.row[k];

@@ -66,6 +66,11 @@ class StiffnessMatrix {
   std::size_t values_ = 0;          // this rank's values per solve (owned × dofs)
   int dofs_ = 0;
   std::vector<std::size_t> at_;  // per owned particle: its place in the order of global IDs
+  // This rank's particles, free DOFs and entries as last sent to rank 0: while they stay
+  // the same on every rank, only the entries' values are sent.
+  std::vector<Gid> sentGids_;
+  std::vector<unsigned char> sentFree_;
+  std::vector<Entry> sentKeys_;
 };
 
 }  // namespace pdq
