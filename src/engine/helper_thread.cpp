@@ -27,11 +27,20 @@ void HelperThread::together(const std::function<void()>& one, const std::functio
   {
     std::lock_guard<std::mutex> lock(m_);
     job_ = &other;
+    failed_ = nullptr;
   }
   cv_.notify_all();
-  one();
+  // The helper is waited for whatever `one` does: `other` may refer to the caller's state.
+  std::exception_ptr mine;
+  try {
+    one();
+  } catch (...) {
+    mine = std::current_exception();
+  }
   std::unique_lock<std::mutex> lock(m_);
   cv_.wait(lock, [this] { return job_ == nullptr; });
+  if (mine) std::rethrow_exception(mine);
+  if (failed_) std::rethrow_exception(failed_);
 }
 
 void HelperThread::loop() {
@@ -41,8 +50,14 @@ void HelperThread::loop() {
     if (quit_) return;
     const std::function<void()>* job = job_;
     lock.unlock();
-    (*job)();
+    std::exception_ptr failed;
+    try {
+      (*job)();
+    } catch (...) {
+      failed = std::current_exception();
+    }
     lock.lock();
+    failed_ = failed;
     job_ = nullptr;
     cv_.notify_all();
   }

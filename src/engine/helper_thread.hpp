@@ -4,6 +4,7 @@
 // node (MPI binds each rank to one core; the other ranks sleep while rank 0 factorises and
 // solves).
 #include <condition_variable>
+#include <exception>
 #include <functional>
 #include <mutex>
 #include <thread>
@@ -16,7 +17,8 @@ class HelperThread {
   ~HelperThread();
   HelperThread(const HelperThread&) = delete;
   HelperThread& operator=(const HelperThread&) = delete;
-  // Runs `other` on the helper and `one` on the calling thread; returns when both are done.
+  // Runs `other` on the helper and `one` on the calling thread; returns when both are done,
+  // rethrowing what either threw (the calling thread's first).
   void together(const std::function<void()>& one, const std::function<void()>& other);
 
  private:
@@ -24,6 +26,7 @@ class HelperThread {
   std::mutex m_;
   std::condition_variable cv_;
   const std::function<void()>* job_ = nullptr;
+  std::exception_ptr failed_;  // what the helper's last job threw
   bool quit_ = false;
   std::thread thread_;  // last: started once the rest is made
 };

@@ -78,18 +78,22 @@ class Model {
   // quasi-static solver's stiffness probes then colour the bond graph instead of the cells
   // (engine/bond_colouring.hpp), far fewer probes.
   virtual bool forcesFromBonds() const { return false; }
+  // Whether the model states its stiffness (below): the quasi-static solver then probes
+  // nothing. The same answer on every rank.
+  virtual bool statesStiffness() const { return false; }
   // The stiffness at the reference configuration (positions X, the reference orientation)
   // with the interactions' state as it is, which the quasi-static solver's fictitious masses
-  // and assembled stiffness need, from a model that can state it: for every owned particle
-  // i, add(i, i, K) and then add(i, j, K) for each particle j it interacts with (local
-  // index; each once), K the nd × nd block −∂F_i/∂u_j row by row, F the force (and moment)
-  // columns the model writes and u the DOFs of motion(): translations, then rotations about
-  // the global axes. Where an interaction is stiffer pulled than pushed (damaged in tension
-  // only) it states the mean of the two, as central differences give it. The same answer
-  // on every rank; false (the default): the solver probes the forces by finite differences.
-  using StiffnessBlocks =
-      std::function<void(std::size_t i, std::size_t j, std::span<const double> K)>;
-  virtual bool referenceStiffness(const Context&, const StiffnessBlocks&) const { return false; }
+  // and assembled stiffness need: for every owned particle i, add(i, i, K, Kb) and then
+  // add(i, j, K, Kb) for each particle j it interacts with (local index; each once). K is the
+  // nd × nd block −∂F_i/∂u_j row by row, F the force (and moment) columns the model writes
+  // and u the DOFs of motion(): translations, then rotations about the global axes. Where
+  // an interaction is stiffer one way than the other (damaged in tension, it is stiffer
+  // pushed than pulled), K holds the mean of the two, as central differences give it, and
+  // Kb the block with each interaction on its stiffer side, for the Gershgorin bounds of the
+  // fictitious masses (elsewhere Kb = K).
+  using StiffnessBlocks = std::function<void(
+      std::size_t i, std::size_t j, std::span<const double> K, std::span<const double> Kb)>;
+  virtual void referenceStiffness(const Context&, const StiffnessBlocks&) const {}
 
   virtual void setup(Context&) {}
   virtual void prepare(Context&) {}

@@ -209,6 +209,7 @@ double Integrator::highestFrequencySquared(Context& ctx, const std::function<voi
 
 bool Integrator::statedRows(Context& ctx, std::vector<double>& rows,
                             std::vector<StiffnessEntry>* entries) {
+  if (!model_.statesStiffness()) return false;
   Particles& P = ctx.particles;
   const std::size_t n = P.owned(), nl = P.local();
   const int nd = nT_ + nR_;
@@ -223,26 +224,25 @@ bool Integrator::statedRows(Context& ctx, std::vector<double>& rows,
   ctx.refreshGhosts(u, nd);
   rows.assign(n * nd, 0.0);
   if (entries) entries->clear();
-  const bool stated =
-      model_.referenceStiffness(ctx, [&](std::size_t i, std::size_t j, std::span<const double> K) {
-        for (int a = 0; a < nd; ++a) {
-          const Constraint c = bodies_[i].constraint[a];
-          const bool freeRow = c != Constraint::Prescribed && c != Constraint::KeepVelocity;
-          // dofForce's units: a model whose force columns hold accelerations is scaled.
-          const double scale = perMass_ && a < nT_ ? bodies_[i].mass : 1.0;
-          for (int b = 0; b < nd; ++b) {
-            const double m = u[nd * j + b];
-            if (m == 0) continue;
-            const double k = K[static_cast<std::size_t>(nd * a + b)] * scale;
-            rows[nd * i + a] += std::fabs(k) * m;
-            // Zeros are kept as the probes keep them: the bonds' pattern.
-            if (entries && freeRow) entries->push_back({P.gid(i), P.gid(j), a, b, k});
-          }
-        }
-      });
-  if (stated && ctx.root())
-    ctx.log() << "quasi-static: the stiffness as the model states it (no probes)\n";
-  return stated;
+  model_.referenceStiffness(ctx, [&](std::size_t i, std::size_t j, std::span<const double> K,
+                                     std::span<const double> bound) {
+    for (int a = 0; a < nd; ++a) {
+      const Constraint c = bodies_[i].constraint[a];
+      const bool freeRow = c != Constraint::Prescribed && c != Constraint::KeepVelocity;
+      // dofForce's units: a model whose force columns hold accelerations is scaled.
+      const double scale = perMass_ && a < nT_ ? bodies_[i].mass : 1.0;
+      for (int b = 0; b < nd; ++b) {
+        const double m = u[nd * j + b];
+        if (m == 0) continue;
+        const auto at = static_cast<std::size_t>(nd * a + b);
+        rows[nd * i + a] += std::fabs(bound[at] * scale) * m;
+        // Zeros are kept as the probes keep them: the bonds' pattern.
+        if (entries && freeRow) entries->push_back({P.gid(i), P.gid(j), a, b, K[at] * scale});
+      }
+    }
+  });
+  if (ctx.root()) ctx.log() << "quasi-static: the stiffness as the model states it (no probes)\n";
+  return true;
 }
 
 std::vector<double> Integrator::gershgorinRows(Context& ctx, const std::function<void()>& forces,

@@ -144,11 +144,6 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
     append(rows, entries.data(), entries.size());
   }
   const std::vector<char> gathered = ctx.gather(rows, starts);
-  if (!valuesOnly) {
-    sentGids_.assign(gids.begin(), gids.end());
-    sentFree_.assign(free.begin(), free.end());
-    sentKeys_ = entries;
-  }
   // Rank 0's solves may take a second core of its node: the node's other ranks wait for them.
   const int nodeRanks = ctx.nodeSize();
 
@@ -156,8 +151,6 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
   if (ctx.root()) {
     if (!factor_) factor_ = std::make_unique<Factor>();
     Factor& F = *factor_;
-    if (std::max(omp_get_max_threads(), nodeRanks) > 1 && !F.helper)
-      F.helper = std::make_unique<HelperThread>();
     std::vector<Gid> all;
     std::vector<unsigned char> isFree;
     std::vector<double> diag;
@@ -336,6 +329,8 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
                           static_cast<const int*>(K->i));
       }
     }
+    if (F.L->is_super && std::max(omp_get_max_threads(), nodeRanks) > 1 && !F.helper)
+      F.helper = std::make_unique<HelperThread>();
     Outcome outcome = Outcome::TooLarge;
     if (static_cast<double>(F.fill) <= maxFill * static_cast<double>(F.entries)) {
       bool ok = unknowns > 0;
@@ -371,6 +366,12 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
     at_[i] = static_cast<std::size_t>(it - sorted.begin());
   }
   dofs_ = dofs;
+  // Rank 0 has placed the entries sent: the next time their values may do.
+  if (!valuesOnly) {
+    sentGids_.assign(gids.begin(), gids.end());
+    sentFree_.assign(free.begin(), free.end());
+    sentKeys_ = entries;
+  }
   return outcome;
 }
 

@@ -40,16 +40,15 @@ int firstAtLeast(int count, int at, F&& f) {
   return lo;
 }
 
-// The place where the running sum of `work` first reaches half its total, when both sides
-// of it are worth a thread (0 otherwise).
-int halfway(const std::vector<double>& work, int from) {
+// The place where the running sum of `work` first reaches half its total, when each side
+// of it holds kCutWork (0 otherwise).
+int halfway(const std::vector<double>& work) {
   double total = 0;
   for (double w : work) total += w;
-  if (total < 2 * kCutWork) return 0;
   double sum = 0;
   for (int r = 0; r < static_cast<int>(work.size()); ++r) {
     sum += work[r];
-    if (2 * sum >= total) return r + 1 > from && r + 1 < static_cast<int>(work.size()) ? r + 1 : 0;
+    if (2 * sum >= total) return sum >= kCutWork && total - sum >= kCutWork ? r + 1 : 0;
   }
   return 0;
 }
@@ -108,9 +107,9 @@ void SupernodalFactor::analyse(const SupernodalLayout& L, const int* colStart, c
     }
     double updating = 0;
     for (double w : work) updating += w;
-    cutUpdates_[s] = halfway(work, 0);
+    cutUpdates_[s] = halfway(work);
     const double solving = static_cast<double>(nsrow - nscol) * nscol * nscol;
-    if (solving >= 2 * kCutWork) cutSolve_[s] = nscol + (nsrow - nscol) / 2;
+    if (solving >= 2 * kCutWork && nsrow - nscol >= 2) cutSolve_[s] = nscol + (nsrow - nscol) / 2;
     const double own = static_cast<double>(nscol) * nscol * nscol / 3;
     total += updating + solving + own;
     cut += (cutUpdates_[s] > 0 ? updating : 0) + (cutSolve_[s] > 0 ? solving : 0);

@@ -8,7 +8,7 @@
 // The elimination tree is cut into two parts that share no supernode's update, with the
 // supernodes above both (the separators) left to the end, so that two threads can take the
 // parts at once ("Two parts of the elimination tree"). Every sum runs in an order fixed by
-// the factor alone: the same bits with one thread or two, on any processor.
+// the factor alone: the same bits with one thread or two.
 #include <array>
 #include <vector>
 

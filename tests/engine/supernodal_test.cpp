@@ -4,11 +4,15 @@
 // supernodes cut in two; a matrix that is not positive definite is told. The solves: the
 // grid's nested-dissection tree is cut into two parts, solved on one thread and on two gives
 // the same bits and the solution asked for to single precision; a dense matrix, one
-// supernode that no cut splits, is solved alike.
+// supernode that no cut splits, is solved alike. The helper thread waits for both jobs
+// whatever they throw.
 #include <cholmod.h>
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
+#include <stdexcept>
+#include <thread>
 #include <vector>
 
 #include "engine/helper_thread.hpp"
@@ -209,6 +213,22 @@ TEST(SupernodalSolve, OneSupernodeIsNotCutAndSolvesAlike) {
   EXPECT_EQ(r.shares[1], 0.0);
   EXPECT_EQ(r.shares[2], 1.0);
   expectSameBitsToSinglePrecision(r);
+}
+
+// The helper thread waits for both jobs whatever they throw, and gives back what they threw.
+TEST(HelperThread, BothJobsFinishAndWhatEitherThrewIsRethrown) {
+  HelperThread helper;
+  int done = 0;
+  auto slow = [&] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    done = 1;
+  };
+  EXPECT_THROW(helper.together([] { throw std::runtime_error("one"); }, slow), std::runtime_error);
+  EXPECT_EQ(done, 1) << "the helper's job had not finished when together() returned";
+  EXPECT_THROW(helper.together([] {}, [] { throw std::logic_error("other"); }), std::logic_error);
+  int both = 0;
+  helper.together([&] { both += 1; }, [&] { both += 2; });
+  EXPECT_EQ(both, 3) << "the helper serves again after a job threw";
 }
 
 }  // namespace

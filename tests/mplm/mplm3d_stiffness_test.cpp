@@ -68,11 +68,12 @@ std::array<double, N_BOND> stateOf(Gid a, Gid b) {
   const Gid key = std::min(a, b) * 7 + std::max(a, b) * 3;
   static const double omegaT[5] = {0, 0.3, 0, 0.2, 1};
   static const double omegaC[5] = {0, 0, 0.4, 0.5, 0};
-  static const double plastic[5] = {0, 0.5 * kYield, -1.5 * kYield, 3 * kYield, -0.4 * kYield};
+  static const double plastic[7] = {0,      0.5 * kYield, -1.5 * kYield, 3 * kYield,
+                                    kYield, -kYield,      -0.4 * kYield};
   std::array<double, N_BOND> s{};
   s[OMEGA_T] = omegaT[key % 5];
   s[OMEGA_C] = omegaC[(key / 5) % 5];
-  s[PLASTIC] = plastic[(key / 3) % 5];
+  s[PLASTIC] = plastic[(key / 3) % 7];
   return s;
 }
 
@@ -93,14 +94,15 @@ void checkStatedStiffness(const std::string& kinematics) {
       std::copy(s.begin(), s.end(), B.attr(b));
     }
 
-  // The stated blocks, by the two particles' local indices.
-  std::map<std::pair<std::size_t, std::size_t>, std::vector<double>> stated;
-  const bool states = sim->model().referenceStiffness(
-      ctx, [&](std::size_t i, std::size_t j, std::span<const double> K) {
-        EXPECT_TRUE(stated.emplace(std::pair{i, j}, std::vector<double>(K.begin(), K.end())).second)
-            << "block " << i << ", " << j << " stated twice";
-      });
-  ASSERT_TRUE(states);
+  // The stated blocks and their bounds, by the two particles' local indices.
+  ASSERT_TRUE(sim->model().statesStiffness());
+  std::map<std::pair<std::size_t, std::size_t>, std::vector<double>> stated, bounds;
+  sim->model().referenceStiffness(ctx, [&](std::size_t i, std::size_t j, std::span<const double> K,
+                                           std::span<const double> Kb) {
+    EXPECT_TRUE(stated.emplace(std::pair{i, j}, std::vector<double>(K.begin(), K.end())).second)
+        << "block " << i << ", " << j << " stated twice";
+    bounds.emplace(std::pair{i, j}, std::vector<double>(Kb.begin(), Kb.end()));
+  });
   // Each row particle's largest stated entry, per translation and rotation row: the scale
   // of the tolerance.
   std::vector<double> scale(2 * n, 0.0);
@@ -136,14 +138,16 @@ void checkStatedStiffness(const std::string& kinematics) {
     a[QW] = before[3], a[QX] = before[4], a[QY] = before[5], a[QZ] = before[6];
     return F;
   };
-  long compared = 0, nonzero = 0;
+  const std::vector<double> at0 = forcesWith(0, 0, 0.0);
+  long compared = 0, nonzero = 0, sided = 0;
   for (std::size_t j = 0; j < n; ++j)
     for (int d = 0; d < 6; ++d) {
       const double h = d < 3 ? 1e-7 * kSpacing : 1e-7;
       const std::vector<double> plus = forcesWith(j, d, h), minus = forcesWith(j, d, -h);
       for (std::size_t i = 0; i < n; ++i)
         for (int a = 0; a < 6; ++a) {
-          const double fd = -(plus[6 * i + a] - minus[6 * i + a]) / (2 * h);
+          const std::size_t r = 6 * i + a;
+          const double fd = -(plus[r] - minus[r]) / (2 * h);
           const auto it = stated.find({i, j});
           const double k = it == stated.end() ? 0.0 : it->second[6 * a + d];
           const double tol = 1e-6 * scale[2 * i + a / 3];
@@ -151,10 +155,25 @@ void checkStatedStiffness(const std::string& kinematics) {
                                   << ", column " << P.gid(j) << " DOF " << d;
           ++compared;
           nonzero += k != 0;
+          // The bound: an interaction's block is its stiffer side's, the larger one-sided
+          // difference; a particle's own diagonal is at least either side's.
+          if (it == stated.end() || (i == j && a != d)) continue;
+          const double pulled = std::fabs(plus[r] - at0[r]) / h;
+          const double pushed = std::fabs(at0[r] - minus[r]) / h;
+          const double kb = std::fabs(bounds.at({i, j})[6 * a + d]);
+          if (i != j)
+            ASSERT_NEAR(kb, std::max(pulled, pushed), tol)
+                << kinematics << ": bound, row " << P.gid(i) << " DOF " << a << ", column "
+                << P.gid(j) << " DOF " << d;
+          else
+            ASSERT_GE(kb, std::max(pulled, pushed) - tol)
+                << kinematics << ": bound, row " << P.gid(i) << " DOF " << a;
+          sided += std::fabs(pulled - pushed) > tol;
         }
     }
   EXPECT_GT(nonzero, 36 * static_cast<long>(n)) << "the blocks hold the interactions";
   EXPECT_EQ(compared, 36 * static_cast<long>(n * n));
+  EXPECT_GT(sided, 0) << "some interaction is stiffer one way";
 }
 
 TEST(Mplm3dStiffness, StatedStiffnessIsTheForcesDerivativeCorotational) {

@@ -248,43 +248,54 @@ class Mplm3d final : public Model {
 
   // The stiffness at the reference configuration: each interaction's small-form matrix (the
   // co-rotational form's tangent there) after its damage, the axial term the mean of the
-  // pulled and the pushed one; a bar's axial term where its plastic strain leaves it elastic
-  // there, and in the co-rotational form the geometric term of the axial force that plastic
-  // strain leaves.
-  bool referenceStiffness(const Context& ctx, const StiffnessBlocks& add) const override {
+  // pulled and the pushed one (the larger in the bound); a bar's axial term where its plastic
+  // strain leaves it elastic there, and in the co-rotational form the geometric term of the
+  // axial force that plastic strain leaves.
+  bool statesStiffness() const override { return true; }
+  void referenceStiffness(const Context& ctx, const StiffnessBlocks& add) const override {
     const Particles& P = ctx.particles;
     const Bonds& B = ctx.bonds;
-    std::vector<double> own(36), blocks;
+    // Per particle of the row: its own block and each interaction's, the mean then the bound.
+    constexpr std::size_t kPair = 72;
+    std::vector<double> own(kPair), blocks;
     for (std::size_t i = 0; i < P.owned(); ++i) {
-      blocks.assign(36 * (B.end(i) - B.begin(i)), 0.0);
+      blocks.assign(kPair * (B.end(i) - B.begin(i)), 0.0);
       std::fill(own.begin(), own.end(), 0.0);
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
         const Interaction& g = geo_[geoOf_[b]];
         const Stiffness& t = types_[g.type];
         const Keeps keep = referenceKeeps(t, g, B.attr(b));
         const UnitRows& u = unitRows_[geoOf_[b]];
-        double* ij = &blocks[36 * (b - B.begin(i))];
+        double* ij = &blocks[kPair * (b - B.begin(i))];
         for (int r = 0; r < 6; ++r)
           for (int c = 0; c < 12; ++c) {
             const int at = 12 * r + c;
-            const double v = keep.axial * t.ka * u.axial[at] +
-                             keep.bend * (t.kb * u.bend[at] + t.kt * u.twist[at]);
-            (c < 6 ? own[6 * r + c] : ij[6 * r + c - 6]) += v;
+            const double rest = keep.bend * (t.kb * u.bend[at] + t.kt * u.twist[at]);
+            const double axial = t.ka * u.axial[at];
+            double* to = c < 6 ? &own[6 * r + c] : &ij[6 * r + c - 6];
+            to[0] += keep.axial * axial + rest;
+            to[36] += keep.axialBound * axial + rest;
           }
         // f_i = N e1 turns with the chord: ∂f_i/∂u_j = (N/d)(I − n0 n0ᵀ).
         for (int p = 0; p < 3 && keep.force != 0; ++p)
           for (int q = 0; q < 3; ++q) {
             const double v = keep.force * g.invL0 * ((p == q ? 1.0 : 0.0) - g.n0[p] * g.n0[q]);
-            own[6 * p + q] += v;
-            ij[6 * p + q] -= v;
+            for (const std::size_t half : {std::size_t{0}, std::size_t{36}}) {
+              own[half + 6 * p + q] += v;
+              ij[half + 6 * p + q] -= v;
+            }
           }
       }
-      add(i, i, own);
-      for (std::size_t b = B.begin(i); b < B.end(i); ++b)
-        add(i, static_cast<std::size_t>(B.partner(b)),
-            std::span<const double>(&blocks[36 * (b - B.begin(i))], 36));
+      auto pair = [](const double* k) {
+        return std::pair{std::span<const double>(k, 36), std::span<const double>(k + 36, 36)};
+      };
+      const auto [k, kb] = pair(own.data());
+      add(i, i, k, kb);
+      for (std::size_t b = B.begin(i); b < B.end(i); ++b) {
+        const auto [kj, kbj] = pair(&blocks[kPair * (b - B.begin(i))]);
+        add(i, static_cast<std::size_t>(B.partner(b)), kj, kbj);
+      }
     }
-    return true;
   }
 
   std::vector<std::string> fields() const override {
@@ -700,16 +711,20 @@ class Mplm3d final : public Model {
   // its axial and its bending and torsional terms, and the axial force a bar's plastic
   // strain leaves there (co-rotational form; 0 otherwise).
   struct Keeps {
-    double axial = 1, bend = 1, force = 0;
+    double axial = 1, axialBound = 1, bend = 1, force = 0;
   };
   Keeps referenceKeeps(const Stiffness& t, const Interaction& g, const double* state) const {
     Keeps k;
     if (t.kind == Kind::Concrete) {
-      k.bend = 1 - std::max(state[OMEGA_T], state[OMEGA_C]);
-      k.axial = 0.5 * (k.bend + (par_.law.crushing ? 1 - state[OMEGA_C] : 1.0));
+      k.bend = 1 - std::max(state[OMEGA_T], state[OMEGA_C]);  // and the pulled side's axial
+      const double pushed = par_.law.crushing ? 1 - state[OMEGA_C] : 1.0;
+      k.axial = 0.5 * (k.bend + pushed);
+      k.axialBound = std::max(k.bend, pushed);
     } else if (t.kind == Kind::Bar) {
+      // Beyond the yield strain it yields either way; at it, one way.
       const double p = std::fabs(state[PLASTIC]);
-      k.axial = p < t.epsY ? 1.0 : (p > t.epsY ? 0.0 : 0.5);  // beyond: it yields either way
+      k.axial = p < t.epsY ? 1.0 : (p > t.epsY ? 0.0 : 0.5);
+      k.axialBound = p <= t.epsY ? 1.0 : 0.0;
       if (corot_) k.force = -t.ka * mplm::plasticStrain(0, state[PLASTIC], t.epsY) * g.L0;
     }
     return k;
