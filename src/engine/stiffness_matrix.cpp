@@ -61,9 +61,8 @@ struct StiffnessMatrix::Factor {
   // OpenMP threads.
   std::unique_ptr<HelperThread> helper;
   std::vector<double> sol;  // a solution
-  // Per gathered entry of the last assembly: its key, its row's unknown and its place in
-  // K's values (−1: not an unknown's); per unknown, its diagonal's place.
-  std::vector<StiffnessEntry> keys;
+  // Per gathered entry of the last assembly: its row's unknown and its place in K's values
+  // (−1: not an unknown's); per unknown, its diagonal's place.
   std::vector<long> rowOf, placed, diagonal;
   std::vector<long> keyRows;  // `row` as it was then
   std::vector<long> row;      // per gathered DOF (rank order, then owned order): unknown or -1
@@ -200,16 +199,10 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
       if (nEntries > 0) std::memcpy(got.data(), gathered.data(), gathered.size());
       for (std::size_t e = 0; e < nEntries; ++e) value[e] = got[e].value;
     }
-    // The entries of a later probe come in the same order (the bonds' pattern, the same
-    // particles): each goes straight to its place in K̂, found the first time.
-    const bool again =
-        valuesOnly ||
-        (F.K && F.placed.size() == nEntries && F.keyRows == F.row &&
-         std::equal(got.begin(), got.end(), F.keys.begin(), [](auto& x, auto& y) {
-           return x.row == y.row && x.col == y.col && x.rowDof == y.rowDof && x.colDof == y.colDof;
-         }));
+    // The values of entries placed before (the bonds' pattern, the same particles) each go
+    // straight to their place in K̂, found the first time.
     cholmod_sparse* K = nullptr;
-    if (again) {
+    if (valuesOnly) {
       K = cholmod_copy_sparse(F.K, &F.c);
       check(F.c, "copying the matrix");
       auto* kx = static_cast<double*>(K->x);
@@ -282,7 +275,6 @@ StiffnessMatrix::Outcome StiffnessMatrix::factorise(Context& ctx, std::span<cons
         const int* at = std::lower_bound(ki + kp[c], ki + kp[c + 1], static_cast<int>(r));
         return at < ki + kp[c + 1] && *at == r ? at - ki : -2;
       };
-      F.keys = got;
       F.keyRows = F.row;
       F.placed.assign(nEntries, -1);
       for (std::size_t e = 0; e < nEntries; ++e) {

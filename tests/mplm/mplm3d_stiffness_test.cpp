@@ -56,6 +56,8 @@ bar_cover = 0.03
 )";
   Scenario sc = readScenario(path);
   std::filesystem::remove(path);
+  sc.problem.run.outDir =
+      (std::filesystem::temp_directory_path() / "pdq_mplm3d_stiffness_out").string();
   auto sim = makeSimulation(std::move(sc.problem), comm);
   sim->setup();
   return sim;
