@@ -24,6 +24,7 @@ void Bonds::finish(std::size_t nOwned) {
   dead_.assign(partnerGid_.size(), 0);
   pending_.clear();
   pending_.shrink_to_fit();
+  ++version_;
 }
 
 void Bonds::resetEmpty(std::size_t nOwned) {
@@ -32,6 +33,7 @@ void Bonds::resetEmpty(std::size_t nOwned) {
   partner_.clear();
   attr_.clear();
   dead_.clear();
+  ++version_;
 }
 
 void Bonds::permute(const std::vector<std::size_t>& perm) {
@@ -52,6 +54,7 @@ void Bonds::permute(const std::vector<std::size_t>& perm) {
   attr_ = std::move(attrs);
   dead_ = std::move(dead);
   partner_.assign(partnerGid_.size(), -1);
+  ++version_;
 }
 
 void Bonds::appendParticle(const Gid* partners, const double* attrs, const std::uint8_t* dead,
@@ -61,6 +64,7 @@ void Bonds::appendParticle(const Gid* partners, const double* attrs, const std::
   attr_.insert(attr_.end(), attrs, attrs + n * nAttr_);
   partner_.resize(partnerGid_.size(), -1);
   start_.push_back(start_.back() + n);
+  ++version_;
 }
 
 }  // namespace pdq

@@ -26,6 +26,10 @@ class Bonds {
   double* attr(std::size_t b) { return &attr_[b * nAttr_]; }
   const double* attr(std::size_t b) const { return &attr_[b * nAttr_]; }
   bool empty() const { return partnerGid_.empty(); }
+  // Changes whenever the bonds are made, reordered, moved in, put back or their partners
+  // renumbered (not when a model writes their attributes): a model keeping something per
+  // bond or per partner rebuilds it then.
+  std::uint64_t version() const { return version_; }
 
   // A broken bond is killed by its model (on each of its two sides alike); a dead bond
   // keeps its attributes but no longer needs its partner nearby: partner(b) is -1 once
@@ -54,12 +58,18 @@ class Bonds {
     std::vector<std::uint8_t> dead;
   };
   void save(Saved& s) const { s.attr = attr_, s.dead = dead_; }
-  void restore(const Saved& s) { attr_ = s.attr, dead_ = s.dead; }
+  void restore(const Saved& s) { attr_ = s.attr, dead_ = s.dead, ++version_; }
   bool same(const Saved& s) const { return attr_ == s.attr && dead_ == s.dead; }
-  std::vector<std::int32_t>& partners() { return partner_; }
+  const std::vector<std::int32_t>& partners() const { return partner_; }
+  // The engine renumbers the partners' local indices here (after the particles moved).
+  std::vector<std::int32_t>& renumberPartners() {
+    ++version_;
+    return partner_;
+  }
 
  private:
   int nAttr_;
+  std::uint64_t version_ = 0;
   std::vector<std::uint64_t> start_{0};
   std::vector<Gid> partnerGid_;
   std::vector<std::int32_t> partner_;

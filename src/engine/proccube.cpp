@@ -236,7 +236,7 @@ void ProcCube::remapBonds(long step) {
     next[i] = first[h];
     first[h] = static_cast<std::int32_t>(i);
   }
-  auto& partner = bonds_.partners();
+  auto& partner = bonds_.renumberPartners();
   for (std::size_t i = 0; i < p_.owned(); ++i) {
     const double* xi = p_.alter(i);
     for (std::size_t b = bonds_.begin(i); b < bonds_.end(i); ++b) {

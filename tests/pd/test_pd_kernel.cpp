@@ -1,6 +1,6 @@
-// The PMB kernel this CPU uses (AVX2 where present) gives the same bits as the portable
-// one, for particles with any number of bonds (tails of 0-3 bonds), with and without
-// bonds breaking.
+// The PMB and LPS kernels this CPU uses (AVX2 where present) give the same bits as the
+// portable ones, for particles with any number of bonds (tails of 0-3 bonds), with and
+// without bonds breaking.
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "models/lps/lps_kernel.hpp"
+#include "models/peri/bond_classes.hpp"
 #include "models/pmb/pmb_kernel.hpp"
 
 namespace pdq::peri {
@@ -27,43 +28,66 @@ void expectKilledAsBroken(const Bonds& bonds, const std::vector<double>& attr, i
     EXPECT_EQ(bonds.alive(b), attr[stride * b + 1] != 0) << "bond " << b;
 }
 
+// The fast PMB kernel reads the bonds' (length, weight) rows (BondClasses); the portable
+// one the attributes themselves. Bonds with a few shared rows, as on a lattice, and bonds
+// with rows of their own.
 TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);
   const std::size_t nA = 6, particles = 64;
   std::vector<double> x(particles * nA);
   for (auto& v : x) v = 3 * u(rng);
-  std::size_t broken = 0;
-  for (double sc : {0.0, 0.05}) {
-    for (std::size_t nb = 0; nb < 40; ++nb) {
-      std::vector<std::int32_t> partner(nb);
-      std::vector<double> attr(2 * nb);
-      for (std::size_t b = 0; b < nb; ++b) {
-        partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
-        const double* xj = &x[partner[b] * nA];
-        const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
-        attr[2 * b] = len * (1 + 0.1 * u(rng));  // stretched or compressed
-        attr[2 * b + 1] = 1 + u(rng);
-      }
-      std::vector<double> attrB = attr;
-      Bonds fastBonds = bondsOfOne(2, nb), portableBonds = bondsOfOne(2, nb);
-      double fast[3], portable[3];
-      pmbKernel()(PmbView{partner.data(), attr.data(), x.data(), nA, sc, &fastBonds}, 0, 0, nb,
-                  fast);
-      pmbKernelPortable(PmbView{partner.data(), attrB.data(), x.data(), nA, sc, &portableBonds}, 0,
-                        0, nb, portable);
-      EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-      EXPECT_EQ(attr, attrB) << "the same bonds break";
-      expectKilledAsBroken(fastBonds, attr, 2);
-      expectKilledAsBroken(portableBonds, attrB, 2);
-      if (sc > 0) {
-        for (std::size_t b = 0; b < nb; ++b) broken += attr[2 * b + 1] == 0;
+  const double shared[3][2] = {{2.0, 1.25}, {3.5, 0.75}, {5.0, 1.5}};
+  std::size_t broken = 0, sharedBroken = 0;
+  for (bool fewRows : {false, true})
+    for (double sc : {0.0, 0.05}) {
+      for (std::size_t nb = 0; nb < 40; ++nb) {
+        std::vector<std::int32_t> partner(nb);
+        Bonds fastBonds = bondsOfOne(2, nb), portableBonds = bondsOfOne(2, nb);
+        for (std::size_t b = 0; b < nb; ++b) {
+          partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
+          const double* xj = &x[partner[b] * nA];
+          const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
+          double* a = fastBonds.attr(b);
+          if (fewRows) {
+            std::copy_n(shared[rng() % 3], 2, a);
+          } else {
+            a[0] = len * (1 + 0.1 * u(rng));  // stretched or compressed
+            a[1] = 1 + u(rng);
+          }
+          std::copy_n(a, 2, portableBonds.attr(b));
+        }
+        BondClasses classes;
+        classes.update(fastBonds);
+        double* attr = nb ? fastBonds.attr(0) : nullptr;
+        double* attrB = nb ? portableBonds.attr(0) : nullptr;
+        double fast[3], portable[3];
+        pmbKernel().force(
+            PmbView{partner.data(), attr, classes.rows(), x.data(), nA, sc, &fastBonds}, 0, 0, nb,
+            fast);
+        pmbKernelPortable(PmbView{partner.data(), attrB, {}, x.data(), nA, sc, &portableBonds}, 0,
+                          0, nb, portable);
+        EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
+        for (std::size_t b = 0; b < nb; ++b) {
+          EXPECT_EQ(0, std::memcmp(attr + 2 * b, attrB + 2 * b, 2 * sizeof(double)))
+              << "the same bonds break";
+          const BondRows r = classes.rows();
+          EXPECT_EQ(0, std::memcmp(r.row + 2 * r.index[b], attr + 2 * b, 2 * sizeof(double)))
+              << "bond " << b << " of " << nb << ": its row follows it as it breaks";
+          if (sc > 0 && attr[2 * b + 1] == 0) ++(fewRows ? sharedBroken : broken);
+        }
+        expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 2 * nb), 2);
+        expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 2 * nb), 2);
       }
     }
-  }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
+  EXPECT_GT(sharedBroken, 50u);
 }
 
+// The fast LPS kernels read the bonds' (length, weight) rows (BondClasses) and the
+// partner's 1/m from its position row's fourth column; the portable ones the attributes
+// themselves. Bonds with a few shared rows, as on a lattice, and bonds with rows of their
+// own.
 TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -71,41 +95,94 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
   std::vector<double> x(particles * nA), theta(particles);
   for (auto& v : x) v = 3 * u(rng);
   for (auto& v : theta) v = u(rng);
-  std::size_t broken = 0;
-  for (double sc : {0.0, 0.05}) {
-    for (std::size_t nb = 0; nb < 40; ++nb) {
-      std::vector<std::int32_t> partner(nb);
-      std::vector<double> attr(3 * nb);
-      for (std::size_t b = 0; b < nb; ++b) {
-        partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
-        const double* xj = &x[partner[b] * nA];
-        const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
-        attr[3 * b] = len * (1 + 0.1 * u(rng));
-        attr[3 * b + 1] = 1 + u(rng);
-        attr[3 * b + 2] = 2 + u(rng);
-      }
-      std::vector<double> attrB = attr;
-      Bonds fastBonds = bondsOfOne(3, nb), portableBonds = bondsOfOne(3, nb);
-      const LpsView fastView{partner.data(), attr.data(), x.data(),  nA, theta.data(), 1.5,
-                             -0.7,           sc,          &fastBonds};
-      const LpsView portableView{partner.data(), attrB.data(), x.data(),      nA, theta.data(), 1.5,
-                                 -0.7,           sc,           &portableBonds};
-      const double d1 = lpsKernels().dilatation(fastView, 0, 0, nb);
-      const double d2 = lpsKernelsPortable().dilatation(portableView, 0, 0, nb);
-      EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
-      double fast[3], portable[3];
-      lpsKernels().force(fastView, 0, 0, nb, 0.3, 0.8, fast);
-      lpsKernelsPortable().force(portableView, 0, 0, nb, 0.3, 0.8, portable);
-      EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-      EXPECT_EQ(attr, attrB) << "the same bonds break";
-      expectKilledAsBroken(fastBonds, attr, 3);
-      expectKilledAsBroken(portableBonds, attrB, 3);
-      if (sc > 0) {
-        for (std::size_t b = 0; b < nb; ++b) broken += attr[3 * b + 1] == 0;
+  const double shared[4][2] = {{2.0, 1.25}, {3.0, 0.75}, {4.5, 1.5}, {6, 0.5}};
+  std::size_t broken = 0, sharedBroken = 0;
+  for (bool fewRows : {false, true})
+    for (double sc : {0.0, 0.05}) {
+      for (std::size_t nb = 0; nb < 40; ++nb) {
+        std::vector<std::int32_t> partner(nb);
+        Bonds fastBonds = bondsOfOne(3, nb), portableBonds = bondsOfOne(3, nb);
+        for (std::size_t b = 0; b < nb; ++b) {
+          partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
+          const double* xj = &x[partner[b] * nA];
+          const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
+          double* a = fastBonds.attr(b);
+          if (fewRows) {
+            std::copy_n(shared[rng() % 4], 2, a);
+          } else {
+            a[0] = len * (1 + 0.1 * u(rng));
+            a[1] = 1 + u(rng);
+          }
+          a[2] = xj[3];  // the partner's 1/m
+          std::copy_n(a, 3, portableBonds.attr(b));
+        }
+        BondClasses classes;
+        classes.update(fastBonds);
+        if (fewRows && nb > 0) {
+          EXPECT_LE(classes.count(), 8u) << "four rows and their twins";
+        }
+        double* attr = nb ? fastBonds.attr(0) : nullptr;
+        double* attrB = nb ? portableBonds.attr(0) : nullptr;
+        const LpsView fastView{partner.data(), attr, classes.rows(), x.data(), nA,
+                               theta.data(),   1.5,  -0.7,           sc,       &fastBonds};
+        const LpsView portableView{partner.data(), attrB, {},   x.data(), nA,
+                                   theta.data(),   1.5,   -0.7, sc,       &portableBonds};
+        const double d1 = lpsKernels().dilatation(fastView, 0, 0, nb);
+        const double d2 = lpsKernelsPortable().dilatation(portableView, 0, 0, nb);
+        EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
+        double fast[3], portable[3];
+        lpsKernels().force(fastView, 0, 0, nb, 0.3, 0.8, fast);
+        lpsKernelsPortable().force(portableView, 0, 0, nb, 0.3, 0.8, portable);
+        EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
+        for (std::size_t b = 0; b < nb; ++b) {
+          EXPECT_EQ(0, std::memcmp(attr + 3 * b, attrB + 3 * b, 3 * sizeof(double)))
+              << "the same bonds break";
+          const BondRows r = classes.rows();
+          EXPECT_EQ(0, std::memcmp(r.row + 2 * r.index[b], attr + 3 * b, 2 * sizeof(double)))
+              << "bond " << b << " of " << nb << ": its row follows it as it breaks";
+          if (sc > 0 && attr[3 * b + 1] == 0) ++(fewRows ? sharedBroken : broken);
+        }
+        expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 3 * nb), 3);
+        expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 3 * nb), 3);
       }
     }
-  }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
+  EXPECT_GT(sharedBroken, 50u);
+}
+
+// The rows are rebuilt when the bonds change (here: put back to a saved state) or when the
+// model rewrites their attributes (forget), and kept otherwise.
+TEST(PdKernel, BondRowsFollowTheBonds) {
+  Bonds bonds = bondsOfOne(3, 6);
+  for (std::size_t b = 0; b < 6; ++b) {
+    bonds.attr(b)[0] = 1.0 + b % 2;
+    bonds.attr(b)[1] = 0.5;
+  }
+  Bonds::Saved intact;
+  bonds.save(intact);
+  BondClasses classes;
+  classes.update(bonds);
+  EXPECT_EQ(classes.count(), 4u) << "two rows and their broken twins";
+  EXPECT_NE(classes.rows().index[0], classes.rows().index[1]);
+  EXPECT_EQ(classes.rows().index[0], classes.rows().index[2]);
+  bonds.attr(0)[0] = 7;  // written by no kernel, unseen until forgotten
+  classes.update(bonds);
+  EXPECT_EQ(classes.rows().row[2 * classes.rows().index[0]], 1.0);
+  classes.forget();
+  classes.update(bonds);
+  EXPECT_EQ(classes.rows().row[2 * classes.rows().index[0]], 7.0);
+  EXPECT_EQ(classes.count(), 6u);
+  bonds.restore(intact);
+  classes.update(bonds);
+  EXPECT_EQ(classes.rows().row[2 * classes.rows().index[0]], 1.0);
+  EXPECT_EQ(classes.count(), 4u);
+  const BondRows r = classes.rows();
+  for (std::size_t b = 0; b < 6; ++b) {
+    const double* twin = r.row + 2 * r.broken[r.index[b]];
+    EXPECT_EQ(twin[0], bonds.attr(b)[0]);
+    EXPECT_EQ(twin[1], 0.0);
+    EXPECT_EQ(r.broken[r.broken[r.index[b]]], r.broken[r.index[b]]) << "a twin is its own";
+  }
 }
 
 }  // namespace

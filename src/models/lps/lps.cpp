@@ -12,6 +12,7 @@
 
 #include "engine/error.hpp"
 #include "models/lps/lps_kernel.hpp"
+#include "models/peri/bond_classes.hpp"
 #include "models/peri/peri_model.hpp"
 
 namespace pdq::peri {
@@ -56,6 +57,20 @@ class Lps final : public PeriModel {
     const std::vector<double> invM = onGhosts(ctx, invM_);
     for (std::size_t i = 0; i < P.owned(); ++i)
       for (std::size_t b = B.begin(i); b < B.end(i); ++b) B.attr(b)[INV_M] = invM[B.partner(b)];
+    // Made here, with the bonds: its first touch of memory is not a time step's.
+    classes_.forget();
+    if (kernels_.readRows) keepRows(P, B);
+  }
+
+  // The AVX2 kernels' bond rows, rebuilt with each partner's 1/m (for the packed rows'
+  // fourth column, as its bonds hold it) when the bonds have changed.
+  BondRows keepRows(const Particles& P, const Bonds& B) {
+    if (classes_.update(B)) {
+      partnerInvM_.assign(P.local(), 0.0);
+      for (std::size_t b = 0; b < B.count(); ++b)
+        if (B.partner(b) >= 0) partnerInvM_[B.partner(b)] = B.attr(b)[INV_M];
+    }
+    return classes_.rows();
   }
 
   void force(Context& ctx) override {
@@ -67,10 +82,19 @@ class Lps final : public PeriModel {
       return;
     }
     theta_.resize(P.local());
-    const LpsView view{B.partners().data(),   B.attr(0),        packed_.pack(P),
-                       PackedPositions::kRow, theta_.data(),    A_ / density_,
-                       B_ / density_,         criticalStretch_, &B};
     const LpsKernels k = kernels_;
+    const BondRows rows = k.readRows ? keepRows(P, B) : BondRows{};
+    const double* x = packed_.pack(P, k.readRows ? partnerInvM_.data() : nullptr);
+    const LpsView view{B.partners().data(),
+                       B.attr(0),
+                       rows,
+                       x,
+                       PackedPositions::kRow,
+                       theta_.data(),
+                       A_ / density_,
+                       B_ / density_,
+                       criticalStretch_,
+                       &B};
     const double D = dim_;
     // Pass 1: dilatation of the owned particles, then to the ghosts.
 #pragma omp parallel for schedule(static)
@@ -111,8 +135,10 @@ class Lps final : public PeriModel {
   bool constantInfluence_ = false;
   LpsKernels kernels_ = lpsKernels();
   double kappa_ = 0, A_ = 0, B_ = 0;
-  std::vector<double> invM_;   // 1 / m of the owned particles (they never move between ranks)
-  std::vector<double> theta_;  // dilatation of every local particle, within a force step
+  std::vector<double> invM_;         // 1 / m of the owned particles (they never move between ranks)
+  std::vector<double> theta_;        // dilatation of every local particle, within a force step
+  BondClasses classes_;              // the AVX2 kernels' bond rows
+  std::vector<double> partnerInvM_;  // 1/m of every local particle that is a partner
 };
 
 PDQ_REGISTER_MODEL(Lps, "lps", "linear peridynamic solid (ordinary state-based peridynamics)");

@@ -14,27 +14,49 @@ inline double lengthTo(const double* xi, const double* xj, double r[3]) {
   return std::sqrt(r[0] * r[0] + r[1] * r[1] + r[2] * r[2]);
 }
 
-inline double dilatationBond(const LpsView& v, const double* xi, std::size_t b) {
-  const double* ab = v.attr + 3 * b;
-  double r[3];
-  const double len = lengthTo(xi, v.x + v.partner[b] * v.nA, r);
-  return ab[1] * ab[0] * (len - ab[0]);
+// A bond's reference length, weight and partner's 1/m: from its attributes (the portable
+// kernels), or from its row and the partner's position row (the AVX2 kernels' tails, which
+// would otherwise fetch the attributes they no longer stream).
+struct Attrs {
+  double len0, w, invMj;
+};
+
+template <bool kRows>
+inline Attrs attrsOf(const LpsView& v, std::size_t b) {
+  if constexpr (kRows) {
+    const double* r = v.rows.row + 2 * v.rows.index[b];
+    return {r[0], r[1], v.x[v.partner[b] * v.nA + 3]};
+  } else {
+    const double* ab = v.attr + 3 * b;
+    return {ab[0], ab[1], ab[2]};
+  }
 }
 
+template <bool kRows>
+inline double dilatationBond(const LpsView& v, const double* xi, std::size_t b) {
+  const Attrs ab = attrsOf<kRows>(v, b);
+  double r[3];
+  const double len = lengthTo(xi, v.x + v.partner[b] * v.nA, r);
+  return ab.w * ab.len0 * (len - ab.len0);
+}
+
+template <bool kRows>
 inline void forceBond(const LpsView& v, const double* xi, std::size_t b, double qi, double invMi,
                       double* sx, double* sy, double* sz) {
   const double* xj = v.x + v.partner[b] * v.nA;
-  double* ab = v.attr + 3 * b;
+  Attrs ab = attrsOf<kRows>(v, b);
   double r[3];
   const double len = lengthTo(xi, xj, r);
-  const double ext = len - ab[0];
+  const double ext = len - ab.len0;
   // Both ends judge a bond from the same numbers, so it breaks on both sides at once.
-  if (v.criticalStretch > 0 && ext > v.criticalStretch * ab[0]) {
-    ab[1] = 0;
+  if (v.criticalStretch > 0 && ext > v.criticalStretch * ab.len0) {
+    ab.w = 0;
+    v.attr[3 * b + 1] = 0;
     v.bonds->kill(b);
+    if (kRows) v.rows.index[b] = v.rows.broken[v.rows.index[b]];
   }
-  const double rk =
-      ab[1] * (v.a * ab[0] * (qi + v.theta[v.partner[b]] * ab[2]) + v.b * (invMi + ab[2]) * ext);
+  const double rk = ab.w * (v.a * ab.len0 * (qi + v.theta[v.partner[b]] * ab.invMj) +
+                            v.b * (invMi + ab.invMj) * ext);
   const double t = rk / len;
   *sx += t * r[0];
   *sy += t * r[1];
@@ -48,8 +70,8 @@ double dilatationPortable(const LpsView& v, std::size_t i, std::size_t b0, std::
   double l[4] = {0, 0, 0, 0};
   std::size_t b = b0;
   for (; b + 4 <= b1; b += 4)
-    for (int k = 0; k < 4; ++k) l[k] += dilatationBond(v, xi, b + k);
-  for (int k = 0; b < b1; ++b, ++k) l[k] += dilatationBond(v, xi, b);
+    for (int k = 0; k < 4; ++k) l[k] += dilatationBond<false>(v, xi, b + k);
+  for (int k = 0; b < b1; ++b, ++k) l[k] += dilatationBond<false>(v, xi, b);
   return lanes(l);
 }
 
@@ -59,49 +81,47 @@ void forcePortable(const LpsView& v, std::size_t i, std::size_t b0, std::size_t 
   double lx[4] = {0, 0, 0, 0}, ly[4] = {0, 0, 0, 0}, lz[4] = {0, 0, 0, 0};
   std::size_t b = b0;
   for (; b + 4 <= b1; b += 4)
-    for (int k = 0; k < 4; ++k) forceBond(v, xi, b + k, qi, invMi, &lx[k], &ly[k], &lz[k]);
-  for (int k = 0; b < b1; ++b, ++k) forceBond(v, xi, b, qi, invMi, &lx[k], &ly[k], &lz[k]);
+    for (int k = 0; k < 4; ++k) forceBond<false>(v, xi, b + k, qi, invMi, &lx[k], &ly[k], &lz[k]);
+  for (int k = 0; b < b1; ++b, ++k) forceBond<false>(v, xi, b, qi, invMi, &lx[k], &ly[k], &lz[k]);
   acc[0] = lanes(lx);
   acc[1] = lanes(ly);
   acc[2] = lanes(lz);
 }
 
-// Four partners' positions (dx, dy, dz relative to xi) and the bond length.
+// Four partners' positions (dx, dy, dz relative to xi), the bond length, and the partners'
+// 1/m (the rows' fourth column).
 struct Four {
-  __m256d dx, dy, dz, len;
+  __m256d dx, dy, dz, len, invM;
 };
 
-[[gnu::target("avx2")]] inline Four four(const LpsView& v, const double* xi, std::size_t b,
-                                         const double* p[4]) {
-  for (int k = 0; k < 4; ++k) p[k] = v.x + v.partner[b + k] * v.nA;
-  const __m256d r0 = _mm256_loadu_pd(p[0]), r1 = _mm256_loadu_pd(p[1]);
-  const __m256d r2 = _mm256_loadu_pd(p[2]), r3 = _mm256_loadu_pd(p[3]);
+[[gnu::target("avx2")]] inline Four four(const LpsView& v, const double* xi, std::size_t b) {
+  const std::int32_t* j = v.partner + b;
+  const __m256d r0 = _mm256_loadu_pd(v.x + j[0] * v.nA), r1 = _mm256_loadu_pd(v.x + j[1] * v.nA);
+  const __m256d r2 = _mm256_loadu_pd(v.x + j[2] * v.nA), r3 = _mm256_loadu_pd(v.x + j[3] * v.nA);
   const __m256d t0 = _mm256_unpacklo_pd(r0, r1), t1 = _mm256_unpackhi_pd(r0, r1);
   const __m256d t2 = _mm256_unpacklo_pd(r2, r3), t3 = _mm256_unpackhi_pd(r2, r3);
   Four f;
   f.dx = _mm256_sub_pd(_mm256_permute2f128_pd(t0, t2, 0x20), _mm256_set1_pd(xi[0]));
   f.dy = _mm256_sub_pd(_mm256_permute2f128_pd(t1, t3, 0x20), _mm256_set1_pd(xi[1]));
   f.dz = _mm256_sub_pd(_mm256_permute2f128_pd(t0, t2, 0x31), _mm256_set1_pd(xi[2]));
+  f.invM = _mm256_permute2f128_pd(t1, t3, 0x31);
   f.len = _mm256_sqrt_pd(
       _mm256_add_pd(_mm256_add_pd(_mm256_mul_pd(f.dx, f.dx), _mm256_mul_pd(f.dy, f.dy)),
                     _mm256_mul_pd(f.dz, f.dz)));
   return f;
 }
 
-// The three attributes of bonds b .. b + 3 (rows of three doubles: a_k b_k c_k) as columns.
-struct Columns {
-  __m256d a, b, c;
+// Reference length and weight of bonds b .. b + 3, from their rows (BondRows).
+struct Pairs {
+  __m256d len0, w;
 };
 
-[[gnu::target("avx2")]] inline Columns columns(const double* attr, std::size_t b) {
-  const double* p = attr + 3 * b;
-  // m0 = a0 b0 c0 a1, m1 = b1 c1 a2 b2, m2 = c2 a3 b3 c3; then the 128-bit halves of
-  // bonds 0, 1 (low) and 2, 3 (high): P = a0 b0 | a2 b2, Q = c0 a1 | c2 a3, R = b1 c1 | b3 c3.
-  const __m256d m0 = _mm256_loadu_pd(p), m1 = _mm256_loadu_pd(p + 4), m2 = _mm256_loadu_pd(p + 8);
-  const __m256d P = _mm256_permute2f128_pd(m0, m1, 0x30);
-  const __m256d Q = _mm256_permute2f128_pd(m0, m2, 0x21);
-  const __m256d R = _mm256_blend_pd(m1, m2, 0xC);
-  return {_mm256_shuffle_pd(P, Q, 0xA), _mm256_shuffle_pd(P, R, 0x5), _mm256_shuffle_pd(Q, R, 0xA)};
+[[gnu::target("avx2")]] inline Pairs pairs(const BondRows& r, std::size_t b) {
+  const std::uint32_t* k = r.index + b;
+  // Halves (bond 0 | bond 2) and (bond 1 | bond 3): one unpack each gives lanes 0, 1, 2, 3.
+  const __m256d p02 = _mm256_loadu2_m128d(r.row + 2 * k[2], r.row + 2 * k[0]);
+  const __m256d p13 = _mm256_loadu2_m128d(r.row + 2 * k[3], r.row + 2 * k[1]);
+  return {_mm256_unpacklo_pd(p02, p13), _mm256_unpackhi_pd(p02, p13)};
 }
 
 [[gnu::target("avx2")]] double dilatationAvx2(const LpsView& v, std::size_t i, std::size_t b0,
@@ -109,16 +129,14 @@ struct Columns {
   const double* xi = v.x + i * v.nA;
   __m256d s = _mm256_setzero_pd();
   std::size_t b = b0;
-  const double* p[4];
   for (; b + 4 <= b1; b += 4) {
-    const Four f = four(v, xi, b, p);
-    const Columns c = columns(v.attr, b);
-    const __m256d len0 = c.a, w = c.b;
+    const Four f = four(v, xi, b);
+    const auto [len0, w] = pairs(v.rows, b);
     s = _mm256_add_pd(s, _mm256_mul_pd(_mm256_mul_pd(w, len0), _mm256_sub_pd(f.len, len0)));
   }
   alignas(32) double l[4];
   _mm256_store_pd(l, s);
-  for (int k = 0; b < b1; ++b, ++k) l[k] += dilatationBond(v, xi, b);
+  for (int k = 0; b < b1; ++b, ++k) l[k] += dilatationBond<true>(v, xi, b);
   return lanes(l);
 }
 
@@ -129,12 +147,11 @@ struct Columns {
                 IM = _mm256_set1_pd(invMi), sc = _mm256_set1_pd(v.criticalStretch);
   __m256d ax = _mm256_setzero_pd(), ay = _mm256_setzero_pd(), az = _mm256_setzero_pd();
   std::size_t b = b0;
-  const double* p[4];
   for (; b + 4 <= b1; b += 4) {
-    const Four f = four(v, xi, b, p);
-    const Columns c = columns(v.attr, b);
-    const __m256d len0 = c.a, invMj = c.c;
-    __m256d w = c.b;
+    const Four f = four(v, xi, b);
+    const Pairs p = pairs(v.rows, b);
+    const __m256d len0 = p.len0, invMj = f.invM;
+    __m256d w = p.w;
     const std::int32_t* j = v.partner + b;
     const __m256d thj = _mm256_set_pd(v.theta[j[3]], v.theta[j[2]], v.theta[j[1]], v.theta[j[0]]);
     const __m256d ext = _mm256_sub_pd(f.len, len0);
@@ -145,6 +162,7 @@ struct Columns {
           if (m & (1 << k)) {
             v.attr[3 * (b + k) + 1] = 0;
             v.bonds->kill(b + k);
+            v.rows.index[b + k] = v.rows.broken[v.rows.index[b + k]];
           }
         w = _mm256_andnot_pd(over, w);
       }
@@ -161,7 +179,7 @@ struct Columns {
   _mm256_store_pd(lx, ax);
   _mm256_store_pd(ly, ay);
   _mm256_store_pd(lz, az);
-  for (int k = 0; b < b1; ++b, ++k) forceBond(v, xi, b, qi, invMi, &lx[k], &ly[k], &lz[k]);
+  for (int k = 0; b < b1; ++b, ++k) forceBond<true>(v, xi, b, qi, invMi, &lx[k], &ly[k], &lz[k]);
   acc[0] = lanes(lx);
   acc[1] = lanes(ly);
   acc[2] = lanes(lz);
@@ -169,10 +187,10 @@ struct Columns {
 
 }  // namespace
 
-LpsKernels lpsKernelsPortable() { return {dilatationPortable, forcePortable}; }
+LpsKernels lpsKernelsPortable() { return {dilatationPortable, forcePortable, false}; }
 
 LpsKernels lpsKernels() {
-  return __builtin_cpu_supports("avx2") ? LpsKernels{dilatationAvx2, forceAvx2}
+  return __builtin_cpu_supports("avx2") ? LpsKernels{dilatationAvx2, forceAvx2, true}
                                         : lpsKernelsPortable();
 }
 

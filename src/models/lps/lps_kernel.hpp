@@ -6,13 +6,16 @@
 #include <cstdint>
 
 #include "engine/bonds.hpp"
+#include "models/peri/bond_classes.hpp"
 
 namespace pdq::peri {
 
 struct LpsView {
   const std::int32_t* partner;  // local index of each bond's partner
   double* attr;                 // per bond: reference length, ω V_j w (0 once broken), 1/m_j
-  const double* x;              // position rows (x, y, z first), nA doubles each
+  BondRows rows;                // reference length and weight by row (the AVX2 kernels')
+  const double* x;              // position rows (x, y, z first), nA doubles each; the
+                                // AVX2 kernels read 1/m of the particle in column 3
   std::size_t nA;
   const double* theta;     // dilatation of every local particle (owned and ghosts)
   double a, b;             // A/ρ and B/ρ of the force state
@@ -26,6 +29,7 @@ struct LpsKernels {
   // Acceleration of particle i (qi = θ_i / m_i, invMi = 1 / m_i); breaks overstretched bonds.
   void (*force)(const LpsView& v, std::size_t i, std::size_t b0, std::size_t b1, double qi,
                 double invMi, double acc[3]);
+  bool readRows;  // the kernels read LpsView::rows (else only attr)
 };
 
 LpsKernels lpsKernels();  // AVX2 when the CPU has it

@@ -65,6 +65,9 @@ class Pmb final : public PeriModel {
         }
         attr[WEIGHT] = c_ * volume[b] * factor / (density_ * attr[XI]);
       }
+    // Made here, with the bonds: its first touch of memory is not a time step's.
+    classes_.forget();
+    if (kernel_.readRows) classes_.update(B);
   }
 
   void force(Context& ctx) override {
@@ -74,12 +77,18 @@ class Pmb final : public PeriModel {
       for (std::size_t i = 0; i < P.owned(); ++i) std::fill_n(P.integ(i), 3, 0.0);
       return;
     }
-    const PmbView view{B.partners().data(),   B.attr(0),        packed_.pack(P),
-                       PackedPositions::kRow, criticalStretch_, &B};
     const PmbKernel kernel = kernel_;
+    if (kernel.readRows) classes_.update(B);
+    const PmbView view{B.partners().data(),
+                       B.attr(0),
+                       kernel.readRows ? classes_.rows() : BondRows{},
+                       packed_.pack(P),
+                       PackedPositions::kRow,
+                       criticalStretch_,
+                       &B};
     const long n = static_cast<long>(P.owned());
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) kernel(view, i, B.begin(i), B.end(i), P.integ(i));
+    for (long i = 0; i < n; ++i) kernel.force(view, i, B.begin(i), B.end(i), P.integ(i));
   }
 
   // Half the energy of its bonds, ½ c s² |ξ| V_i V_j w g each.
@@ -99,6 +108,7 @@ class Pmb final : public PeriModel {
 
   bool surfaceCorrection_ = false;
   PmbKernel kernel_ = pmbKernel();
+  BondClasses classes_;  // the AVX2 kernel's bond rows
   double c_ = 0;
 };
 

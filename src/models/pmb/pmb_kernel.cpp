@@ -10,20 +10,27 @@ namespace {
 // The bond (of four) that each vector lane holds in the AVX2 kernel.
 constexpr int kLaneBond[4] = {0, 2, 1, 3};
 
-// One bond into lane sums s[3]: returns nothing, breaks the bond when overstretched.
+// One bond into lane sums s[3]: returns nothing, breaks the bond when overstretched. Its
+// length and weight come from its attributes (the portable kernel) or its row (the AVX2
+// kernel's tail, which would otherwise fetch the attributes it no longer streams).
+template <bool kRows>
 inline void bond(const PmbView& v, const double* xi, std::size_t b, double* sx, double* sy,
                  double* sz) {
   const double* xj = v.x + v.partner[b] * v.nA;
-  double* ab = v.attr + 2 * b;
+  const double* ab = kRows ? v.rows.row + 2 * v.rows.index[b] : v.attr + 2 * b;
+  const double len0 = ab[0];
+  double w = ab[1];
   const double r0 = xj[0] - xi[0], r1 = xj[1] - xi[1], r2 = xj[2] - xi[2];
   const double len = std::sqrt(r0 * r0 + r1 * r1 + r2 * r2);
-  const double ext = len - ab[0];
+  const double ext = len - len0;
   // Both ends judge a bond from the same numbers, so it breaks on both sides at once.
-  if (v.criticalStretch > 0 && ext > v.criticalStretch * ab[0]) {
-    ab[1] = 0;
+  if (v.criticalStretch > 0 && ext > v.criticalStretch * len0) {
+    w = 0;
+    v.attr[2 * b + 1] = 0;
     v.bonds->kill(b);
+    if (kRows) v.rows.index[b] = v.rows.broken[v.rows.index[b]];
   }
-  const double t = ab[1] * ext / len;
+  const double t = w * ext / len;
   *sx += t * r0;
   *sy += t * r1;
   *sz += t * r2;
@@ -56,7 +63,9 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
     const __m256d dy = _mm256_sub_pd(_mm256_permute2f128_pd(t1, t3, 0x20), xi1);
     const __m256d dz = _mm256_sub_pd(_mm256_permute2f128_pd(t0, t2, 0x31), xi2);
     // Bond attributes (length, weight) of the four bonds, de-interleaved.
-    const __m256d a01 = _mm256_loadu_pd(v.attr + 2 * b), a23 = _mm256_loadu_pd(v.attr + 2 * b + 4);
+    const std::uint32_t* k = v.rows.index + b;
+    const __m256d a01 = _mm256_loadu2_m128d(v.rows.row + 2 * k[1], v.rows.row + 2 * k[0]);
+    const __m256d a23 = _mm256_loadu2_m128d(v.rows.row + 2 * k[3], v.rows.row + 2 * k[2]);
     const __m256d len0 = _mm256_unpacklo_pd(a01, a23);
     __m256d w = _mm256_unpackhi_pd(a01, a23);
     const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(
@@ -70,6 +79,7 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
             const std::size_t bk = b + kLaneBond[k];
             v.attr[2 * bk + 1] = 0;
             v.bonds->kill(bk);
+            v.rows.index[bk] = v.rows.broken[v.rows.index[bk]];
           }
         w = _mm256_andnot_pd(over, w);
       }
@@ -89,7 +99,7 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
     ly[kLaneBond[k]] = sy[k];
     lz[kLaneBond[k]] = sz[k];
   }
-  for (int k = 0; b < b1; ++b, ++k) bond(v, xi, b, &lx[k], &ly[k], &lz[k]);
+  for (int k = 0; b < b1; ++b, ++k) bond<true>(v, xi, b, &lx[k], &ly[k], &lz[k]);
   finish(lx, ly, lz, acc);
 }
 
@@ -101,11 +111,14 @@ void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::siz
   double lx[4] = {0, 0, 0, 0}, ly[4] = {0, 0, 0, 0}, lz[4] = {0, 0, 0, 0};
   std::size_t b = b0;
   for (; b + 4 <= b1; b += 4)
-    for (int k = 0; k < 4; ++k) bond(v, xi, b + k, &lx[k], &ly[k], &lz[k]);
-  for (int k = 0; b < b1; ++b, ++k) bond(v, xi, b, &lx[k], &ly[k], &lz[k]);
+    for (int k = 0; k < 4; ++k) bond<false>(v, xi, b + k, &lx[k], &ly[k], &lz[k]);
+  for (int k = 0; b < b1; ++b, ++k) bond<false>(v, xi, b, &lx[k], &ly[k], &lz[k]);
   finish(lx, ly, lz, acc);
 }
 
-PmbKernel pmbKernel() { return __builtin_cpu_supports("avx2") ? pmbKernelAvx2 : pmbKernelPortable; }
+PmbKernel pmbKernel() {
+  return __builtin_cpu_supports("avx2") ? PmbKernel{pmbKernelAvx2, true}
+                                        : PmbKernel{pmbKernelPortable, false};
+}
 
 }  // namespace pdq::peri

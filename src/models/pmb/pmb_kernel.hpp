@@ -8,20 +8,24 @@
 #include <cstdint>
 
 #include "engine/bonds.hpp"
+#include "models/peri/bond_classes.hpp"
 
 namespace pdq::peri {
 
 struct PmbView {
   const std::int32_t* partner;  // local index of each bond's partner
   double* attr;                 // per bond: reference length, weight (0 once broken)
+  BondRows rows;                // the same two by row (the AVX2 kernel's)
   const double* x;              // position rows (x, y, z first), nA doubles each
   std::size_t nA;
   double criticalStretch;  // 0: bonds never break
   Bonds* bonds;            // a bond that breaks is also killed here (the engine's flag)
 };
 
-using PmbKernel = void (*)(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
-                           double acc[3]);
+struct PmbKernel {
+  void (*force)(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1, double acc[3]);
+  bool readRows;  // it reads PmbView::rows (else only attr)
+};
 
 // The fastest kernel this CPU runs (AVX2 when present, else the portable one).
 PmbKernel pmbKernel();
