@@ -3,6 +3,7 @@
 // without bonds breaking.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -28,6 +29,34 @@ void expectKilledAsBroken(const Bonds& bonds, const std::vector<double>& attr, i
     EXPECT_EQ(bonds.alive(b), attr[stride * b + 1] != 0) << "bond " << b;
 }
 
+// Particle 0's nb bonds to random partners, in both sets of bonds alike: length and weight
+// from one of the `shared` rows, as on a lattice, or each bond its own (stretched or
+// compressed); a third attribute, where there is one, is the partner's 1/m (its position
+// row's fourth column).
+std::vector<std::int32_t> randomBonds(std::mt19937_64& rng, const std::vector<double>& x,
+                                      std::size_t nA,
+                                      const std::vector<std::array<double, 2>>& shared,
+                                      bool fewRows, std::size_t nb, Bonds& fast, Bonds& portable) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  const std::size_t particles = x.size() / nA;
+  std::vector<std::int32_t> partner(nb);
+  for (std::size_t b = 0; b < nb; ++b) {
+    partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
+    const double* xj = &x[partner[b] * nA];
+    const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
+    double* a = fast.attr(b);
+    if (fewRows) {
+      std::copy_n(shared[rng() % shared.size()].data(), 2, a);
+    } else {
+      a[0] = len * (1 + 0.1 * u(rng));
+      a[1] = 1 + u(rng);
+    }
+    if (fast.nAttr() > 2) a[2] = xj[3];
+    std::copy_n(a, fast.nAttr(), portable.attr(b));
+  }
+  return partner;
+}
+
 // The fast PMB kernel reads the bonds' (length, weight) rows (BondClasses); the portable
 // one the attributes themselves. Bonds with a few shared rows, as on a lattice, and bonds
 // with rows of their own.
@@ -37,26 +66,14 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
   const std::size_t nA = 6, particles = 64;
   std::vector<double> x(particles * nA);
   for (auto& v : x) v = 3 * u(rng);
-  const double shared[3][2] = {{2.0, 1.25}, {3.5, 0.75}, {5.0, 1.5}};
+  const std::vector<std::array<double, 2>> shared = {{2.0, 1.25}, {3.5, 0.75}, {5.0, 1.5}};
   std::size_t broken = 0, sharedBroken = 0;
   for (bool fewRows : {false, true})
     for (double sc : {0.0, 0.05}) {
       for (std::size_t nb = 0; nb < 40; ++nb) {
-        std::vector<std::int32_t> partner(nb);
         Bonds fastBonds = bondsOfOne(2, nb), portableBonds = bondsOfOne(2, nb);
-        for (std::size_t b = 0; b < nb; ++b) {
-          partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
-          const double* xj = &x[partner[b] * nA];
-          const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
-          double* a = fastBonds.attr(b);
-          if (fewRows) {
-            std::copy_n(shared[rng() % 3], 2, a);
-          } else {
-            a[0] = len * (1 + 0.1 * u(rng));  // stretched or compressed
-            a[1] = 1 + u(rng);
-          }
-          std::copy_n(a, 2, portableBonds.attr(b));
-        }
+        const std::vector<std::int32_t> partner =
+            randomBonds(rng, x, nA, shared, fewRows, nb, fastBonds, portableBonds);
         BondClasses classes;
         classes.update(fastBonds);
         double* attr = nb ? fastBonds.attr(0) : nullptr;
@@ -95,27 +112,15 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
   std::vector<double> x(particles * nA), theta(particles);
   for (auto& v : x) v = 3 * u(rng);
   for (auto& v : theta) v = u(rng);
-  const double shared[4][2] = {{2.0, 1.25}, {3.0, 0.75}, {4.5, 1.5}, {6, 0.5}};
+  const std::vector<std::array<double, 2>> shared = {
+      {2.0, 1.25}, {3.0, 0.75}, {4.5, 1.5}, {6, 0.5}};
   std::size_t broken = 0, sharedBroken = 0;
   for (bool fewRows : {false, true})
     for (double sc : {0.0, 0.05}) {
       for (std::size_t nb = 0; nb < 40; ++nb) {
-        std::vector<std::int32_t> partner(nb);
         Bonds fastBonds = bondsOfOne(3, nb), portableBonds = bondsOfOne(3, nb);
-        for (std::size_t b = 0; b < nb; ++b) {
-          partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
-          const double* xj = &x[partner[b] * nA];
-          const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
-          double* a = fastBonds.attr(b);
-          if (fewRows) {
-            std::copy_n(shared[rng() % 4], 2, a);
-          } else {
-            a[0] = len * (1 + 0.1 * u(rng));
-            a[1] = 1 + u(rng);
-          }
-          a[2] = xj[3];  // the partner's 1/m
-          std::copy_n(a, 3, portableBonds.attr(b));
-        }
+        const std::vector<std::int32_t> partner =
+            randomBonds(rng, x, nA, shared, fewRows, nb, fastBonds, portableBonds);
         BondClasses classes;
         classes.update(fastBonds);
         if (fewRows && nb > 0) {
