@@ -1,5 +1,5 @@
-// The PMB and LPS kernels this CPU uses (AVX2 where present) give the same bits as the
-// portable ones, for particles with any number of bonds (tails of 0-3 bonds), with and
+// The PMB and LPS kernels of every vector width this CPU runs (AVX2, AVX-512) give the same
+// bits as the portable ones, for particles with any number of bonds (tails of 0-3 bonds), with and
 // without bonds breaking.
 #include <gtest/gtest.h>
 
@@ -14,6 +14,14 @@
 
 namespace pdq::peri {
 namespace {
+
+// The vector widths this CPU runs.
+std::vector<Simd> widths() {
+  std::vector<Simd> w;
+  for (Simd s : {Simd::avx2, Simd::avx512})
+    if (s <= widestSimd()) w.push_back(s);
+  return w;
+}
 
 // Particle 0's nb bonds, all alive, for the kernels to kill the ones that break.
 Bonds bondsOfOne(int nAttr, std::size_t nb) {
@@ -68,35 +76,37 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
   for (auto& v : x) v = 3 * u(rng);
   const std::vector<std::array<double, 2>> shared = {{2.0, 1.25}, {3.5, 0.75}, {5.0, 1.5}};
   std::size_t broken = 0, sharedBroken = 0;
-  for (bool fewRows : {false, true})
-    for (double sc : {0.0, 0.05}) {
-      for (std::size_t nb = 0; nb < 40; ++nb) {
-        Bonds fastBonds = bondsOfOne(2, nb), portableBonds = bondsOfOne(2, nb);
-        const std::vector<std::int32_t> partner =
-            randomBonds(rng, x, nA, shared, fewRows, nb, fastBonds, portableBonds);
-        BondClasses classes;
-        classes.update(fastBonds);
-        double* attr = nb ? fastBonds.attr(0) : nullptr;
-        double* attrB = nb ? portableBonds.attr(0) : nullptr;
-        double fast[3], portable[3];
-        pmbKernel().force(
-            PmbView{partner.data(), attr, classes.rows(), x.data(), nA, sc, &fastBonds}, 0, 0, nb,
-            fast);
-        pmbKernelPortable(PmbView{partner.data(), attrB, {}, x.data(), nA, sc, &portableBonds}, 0,
-                          0, nb, portable);
-        EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-        for (std::size_t b = 0; b < nb; ++b) {
-          EXPECT_EQ(0, std::memcmp(attr + 2 * b, attrB + 2 * b, 2 * sizeof(double)))
-              << "the same bonds break";
-          const BondRows r = classes.rows();
-          EXPECT_EQ(0, std::memcmp(r.row + 2 * r.index[b], attr + 2 * b, 2 * sizeof(double)))
-              << "bond " << b << " of " << nb << ": its row follows it as it breaks";
-          if (sc > 0 && attr[2 * b + 1] == 0) ++(fewRows ? sharedBroken : broken);
+  for (Simd width : widths())
+    for (bool fewRows : {false, true})
+      for (double sc : {0.0, 0.05}) {
+        for (std::size_t nb = 0; nb < 40; ++nb) {
+          SCOPED_TRACE(static_cast<int>(width));
+          Bonds fastBonds = bondsOfOne(2, nb), portableBonds = bondsOfOne(2, nb);
+          const std::vector<std::int32_t> partner =
+              randomBonds(rng, x, nA, shared, fewRows, nb, fastBonds, portableBonds);
+          BondClasses classes;
+          classes.update(fastBonds);
+          double* attr = nb ? fastBonds.attr(0) : nullptr;
+          double* attrB = nb ? portableBonds.attr(0) : nullptr;
+          double fast[3], portable[3];
+          pmbKernel(width).force(
+              PmbView{partner.data(), attr, classes.rows(), x.data(), nA, sc, &fastBonds}, 0, 0, nb,
+              fast);
+          pmbKernelPortable(PmbView{partner.data(), attrB, {}, x.data(), nA, sc, &portableBonds}, 0,
+                            0, nb, portable);
+          EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
+          for (std::size_t b = 0; b < nb; ++b) {
+            EXPECT_EQ(0, std::memcmp(attr + 2 * b, attrB + 2 * b, 2 * sizeof(double)))
+                << "the same bonds break";
+            const BondRows r = classes.rows();
+            EXPECT_EQ(0, std::memcmp(r.row + 2 * r.index[b], attr + 2 * b, 2 * sizeof(double)))
+                << "bond " << b << " of " << nb << ": its row follows it as it breaks";
+            if (sc > 0 && attr[2 * b + 1] == 0) ++(fewRows ? sharedBroken : broken);
+          }
+          expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 2 * nb), 2);
+          expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 2 * nb), 2);
         }
-        expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 2 * nb), 2);
-        expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 2 * nb), 2);
       }
-    }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
   EXPECT_GT(sharedBroken, 50u);
 }
@@ -115,42 +125,44 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
   const std::vector<std::array<double, 2>> shared = {
       {2.0, 1.25}, {3.0, 0.75}, {4.5, 1.5}, {6, 0.5}};
   std::size_t broken = 0, sharedBroken = 0;
-  for (bool fewRows : {false, true})
-    for (double sc : {0.0, 0.05}) {
-      for (std::size_t nb = 0; nb < 40; ++nb) {
-        Bonds fastBonds = bondsOfOne(3, nb), portableBonds = bondsOfOne(3, nb);
-        const std::vector<std::int32_t> partner =
-            randomBonds(rng, x, nA, shared, fewRows, nb, fastBonds, portableBonds);
-        BondClasses classes;
-        classes.update(fastBonds);
-        if (fewRows && nb > 0) {
-          EXPECT_LE(classes.count(), 8u) << "four rows and their twins";
+  for (Simd width : widths())
+    for (bool fewRows : {false, true})
+      for (double sc : {0.0, 0.05}) {
+        for (std::size_t nb = 0; nb < 40; ++nb) {
+          SCOPED_TRACE(static_cast<int>(width));
+          Bonds fastBonds = bondsOfOne(3, nb), portableBonds = bondsOfOne(3, nb);
+          const std::vector<std::int32_t> partner =
+              randomBonds(rng, x, nA, shared, fewRows, nb, fastBonds, portableBonds);
+          BondClasses classes;
+          classes.update(fastBonds);
+          if (fewRows && nb > 0) {
+            EXPECT_LE(classes.count(), 8u) << "four rows and their twins";
+          }
+          double* attr = nb ? fastBonds.attr(0) : nullptr;
+          double* attrB = nb ? portableBonds.attr(0) : nullptr;
+          const LpsView fastView{partner.data(), attr, classes.rows(), x.data(), nA,
+                                 theta.data(),   1.5,  -0.7,           sc,       &fastBonds};
+          const LpsView portableView{partner.data(), attrB, {},   x.data(), nA,
+                                     theta.data(),   1.5,   -0.7, sc,       &portableBonds};
+          const double d1 = lpsKernels(width).dilatation(fastView, 0, 0, nb);
+          const double d2 = lpsKernelsPortable().dilatation(portableView, 0, 0, nb);
+          EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
+          double fast[3], portable[3];
+          lpsKernels(width).force(fastView, 0, 0, nb, 0.3, 0.8, fast);
+          lpsKernelsPortable().force(portableView, 0, 0, nb, 0.3, 0.8, portable);
+          EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
+          for (std::size_t b = 0; b < nb; ++b) {
+            EXPECT_EQ(0, std::memcmp(attr + 3 * b, attrB + 3 * b, 3 * sizeof(double)))
+                << "the same bonds break";
+            const BondRows r = classes.rows();
+            EXPECT_EQ(0, std::memcmp(r.row + 2 * r.index[b], attr + 3 * b, 2 * sizeof(double)))
+                << "bond " << b << " of " << nb << ": its row follows it as it breaks";
+            if (sc > 0 && attr[3 * b + 1] == 0) ++(fewRows ? sharedBroken : broken);
+          }
+          expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 3 * nb), 3);
+          expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 3 * nb), 3);
         }
-        double* attr = nb ? fastBonds.attr(0) : nullptr;
-        double* attrB = nb ? portableBonds.attr(0) : nullptr;
-        const LpsView fastView{partner.data(), attr, classes.rows(), x.data(), nA,
-                               theta.data(),   1.5,  -0.7,           sc,       &fastBonds};
-        const LpsView portableView{partner.data(), attrB, {},   x.data(), nA,
-                                   theta.data(),   1.5,   -0.7, sc,       &portableBonds};
-        const double d1 = lpsKernels().dilatation(fastView, 0, 0, nb);
-        const double d2 = lpsKernelsPortable().dilatation(portableView, 0, 0, nb);
-        EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
-        double fast[3], portable[3];
-        lpsKernels().force(fastView, 0, 0, nb, 0.3, 0.8, fast);
-        lpsKernelsPortable().force(portableView, 0, 0, nb, 0.3, 0.8, portable);
-        EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-        for (std::size_t b = 0; b < nb; ++b) {
-          EXPECT_EQ(0, std::memcmp(attr + 3 * b, attrB + 3 * b, 3 * sizeof(double)))
-              << "the same bonds break";
-          const BondRows r = classes.rows();
-          EXPECT_EQ(0, std::memcmp(r.row + 2 * r.index[b], attr + 3 * b, 2 * sizeof(double)))
-              << "bond " << b << " of " << nb << ": its row follows it as it breaks";
-          if (sc > 0 && attr[3 * b + 1] == 0) ++(fewRows ? sharedBroken : broken);
-        }
-        expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 3 * nb), 3);
-        expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 3 * nb), 3);
       }
-    }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
   EXPECT_GT(sharedBroken, 50u);
 }

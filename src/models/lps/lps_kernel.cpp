@@ -189,9 +189,16 @@ struct Pairs {
 
 LpsKernels lpsKernelsPortable() { return {dilatationPortable, forcePortable, false}; }
 
-LpsKernels lpsKernels() {
-  return __builtin_cpu_supports("avx2") ? LpsKernels{dilatationAvx2, forceAvx2, true}
-                                        : lpsKernelsPortable();
+LpsKernels lpsKernels(Simd width) {
+  switch (width) {
+    case Simd::avx512:
+      return lpsKernelsAvx512();
+    case Simd::avx2:
+      return {dilatationAvx2, forceAvx2, true};
+    case Simd::portable:
+      break;
+  }
+  return lpsKernelsPortable();
 }
 
 }  // namespace pdq::peri

@@ -1,12 +1,13 @@
 #pragma once
 // The LPS kernels: the dilatation sum and the acceleration of one particle from its bonds.
 // As for PMB (pmb_kernel.hpp), bonds are summed in four interleaved lanes added as
-// (l0 + l1) + (l2 + l3); the AVX2 and portable versions give the same bits.
+// (l0 + l1) + (l2 + l3); the portable, AVX2 and AVX-512 versions give the same bits.
 #include <cstddef>
 #include <cstdint>
 
 #include "engine/bonds.hpp"
 #include "models/peri/bond_classes.hpp"
+#include "models/peri/simd.hpp"
 
 namespace pdq::peri {
 
@@ -32,7 +33,9 @@ struct LpsKernels {
   bool readRows;  // the kernels read LpsView::rows (else only attr)
 };
 
-LpsKernels lpsKernels();  // AVX2 when the CPU has it
+// The kernels of the given width (at most widestSimd()).
+LpsKernels lpsKernels(Simd width = widestSimd());
 LpsKernels lpsKernelsPortable();
+LpsKernels lpsKernelsAvx512();
 
 }  // namespace pdq::peri

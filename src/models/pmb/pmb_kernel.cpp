@@ -116,9 +116,16 @@ void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::siz
   finish(lx, ly, lz, acc);
 }
 
-PmbKernel pmbKernel() {
-  return __builtin_cpu_supports("avx2") ? PmbKernel{pmbKernelAvx2, true}
-                                        : PmbKernel{pmbKernelPortable, false};
+PmbKernel pmbKernel(Simd width) {
+  switch (width) {
+    case Simd::avx512:
+      return {pmbKernelAvx512, true};
+    case Simd::avx2:
+      return {pmbKernelAvx2, true};
+    case Simd::portable:
+      break;
+  }
+  return {pmbKernelPortable, false};
 }
 
 }  // namespace pdq::peri

@@ -1,14 +1,15 @@
 #pragma once
 // The PMB force kernel: the acceleration of one particle from its bonds. Bonds are summed
 // in four interleaved lanes (bond k of the particle goes to lane k mod 4) and the lanes
-// are added as (l0 + l1) + (l2 + l3), so an AVX2 version can do four bonds at once; the
-// portable version follows exactly the same order, so both give the same bits, on any
-// machine and for any number of ranks or threads.
+// are added as (l0 + l1) + (l2 + l3), so an AVX2 version can do four bonds at once and an
+// AVX-512 one eight (two fours in turn); the portable version follows exactly the same
+// order, so all give the same bits, on any machine and for any number of ranks or threads.
 #include <cstddef>
 #include <cstdint>
 
 #include "engine/bonds.hpp"
 #include "models/peri/bond_classes.hpp"
+#include "models/peri/simd.hpp"
 
 namespace pdq::peri {
 
@@ -27,9 +28,11 @@ struct PmbKernel {
   bool readRows;  // it reads PmbView::rows (else only attr)
 };
 
-// The fastest kernel this CPU runs (AVX2 when present, else the portable one).
-PmbKernel pmbKernel();
+// The kernel of the given width (at most widestSimd()).
+PmbKernel pmbKernel(Simd width = widestSimd());
 void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
                        double acc[3]);
+void pmbKernelAvx512(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
+                     double acc[3]);
 
 }  // namespace pdq::peri

@@ -1,0 +1,135 @@
+#pragma once
+// Eight bonds at a time for the AVX-512 kernels (functions compiled for x86-64-v4, called
+// only where the processor has it; the files are not, so that no inline function of a
+// header they include comes out in AVX-512 for the rest of the library to call): the
+// partners' position rows transposed, and the bonds' (length, weight) rows. Lane L holds
+// bond kLane8[L] of the eight, so that each half holds bonds 0, 2, 1, 3 of its four, the
+// lane order of the AVX2 kernels; a kernel adds the low half's four bonds to its four lane
+// sums and then the high half's, the very order of the four-wide kernels, so the sums keep
+// their bits.
+#include <immintrin.h>
+
+// GCC 12's intrinsics leave the lanes they are told to overwrite uninitialised
+// (_mm512_undefined_pd), which its own warning then reports in the files that include this.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include <cstddef>
+#include <cstdint>
+
+#include "models/peri/bond_classes.hpp"
+
+namespace pdq::peri {
+
+constexpr int kLane8[8] = {0, 2, 1, 3, 4, 6, 5, 7};
+
+// Columns 0-3 of the eight partners' rows, less xi in 0-2; len = |(dx, dy, dz)|.
+struct Rows8 {
+  __m512d dx, dy, dz, c3, len;
+};
+
+[[gnu::target("arch=x86-64-v4")]] inline __m512d twoRows(const double* a, const double* b) {
+  return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(a)), _mm256_loadu_pd(b), 1);
+}
+
+[[gnu::target("arch=x86-64-v4")]] inline Rows8 rows8(const double* x, std::size_t nA,
+                                                     const std::int32_t* j, const double* xi) {
+  const __m512d r01 = twoRows(x + j[0] * nA, x + j[1] * nA),
+                r23 = twoRows(x + j[2] * nA, x + j[3] * nA),
+                r45 = twoRows(x + j[4] * nA, x + j[5] * nA),
+                r67 = twoRows(x + j[6] * nA, x + j[7] * nA);
+  // [x0 x2 z0 z2 x1 x3 z1 z3] and [y0 y2 c0 c2 y1 y3 c1 c3], and the same for 4-7.
+  const __m512d lo0 = _mm512_unpacklo_pd(r01, r23), hi0 = _mm512_unpackhi_pd(r01, r23);
+  const __m512d lo1 = _mm512_unpacklo_pd(r45, r67), hi1 = _mm512_unpackhi_pd(r45, r67);
+  const __m512i first = _mm512_set_epi64(13, 12, 9, 8, 5, 4, 1, 0);
+  const __m512i second = _mm512_set_epi64(15, 14, 11, 10, 7, 6, 3, 2);
+  Rows8 r;
+  r.dx = _mm512_sub_pd(_mm512_permutex2var_pd(lo0, first, lo1), _mm512_set1_pd(xi[0]));
+  r.dy = _mm512_sub_pd(_mm512_permutex2var_pd(hi0, first, hi1), _mm512_set1_pd(xi[1]));
+  r.dz = _mm512_sub_pd(_mm512_permutex2var_pd(lo0, second, lo1), _mm512_set1_pd(xi[2]));
+  r.c3 = _mm512_permutex2var_pd(hi0, second, hi1);
+  r.len = _mm512_sqrt_pd(
+      _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(r.dx, r.dx), _mm512_mul_pd(r.dy, r.dy)),
+                    _mm512_mul_pd(r.dz, r.dz)));
+  return r;
+}
+
+// The eight 32-bit numbers at p in lane order.
+[[gnu::target("arch=x86-64-v4")]] inline __m256i lanes8(const void* p) {
+  return _mm256_permutevar8x32_epi32(_mm256_loadu_si256(static_cast<const __m256i*>(p)),
+                                     _mm256_setr_epi32(0, 2, 1, 3, 4, 6, 5, 7));
+}
+
+// Reference length and weight of the eight bonds whose row numbers are at k.
+struct Pairs8 {
+  __m512d len0, w;
+};
+
+[[gnu::target("arch=x86-64-v4")]] inline __m512d fourPairs(const double* row,
+                                                           const std::uint32_t* k, int a, int b,
+                                                           int c, int d) {
+  const __m256d lo = _mm256_loadu2_m128d(row + 2 * k[b], row + 2 * k[a]);
+  const __m256d hi = _mm256_loadu2_m128d(row + 2 * k[d], row + 2 * k[c]);
+  return _mm512_insertf64x4(_mm512_castpd256_pd512(lo), hi, 1);
+}
+
+[[gnu::target("arch=x86-64-v4")]] inline Pairs8 pairs8(const BondRows& r, const std::uint32_t* k) {
+  // Rows (0 | 1 | 4 | 5) and (2 | 3 | 6 | 7): one unpack each gives the lanes in order.
+  const __m512d p = fourPairs(r.row, k, 0, 1, 4, 5), q = fourPairs(r.row, k, 2, 3, 6, 7);
+  return {_mm512_unpacklo_pd(p, q), _mm512_unpackhi_pd(p, q)};
+}
+
+// The one to seven bonds [b, b1) left after the groups of eight, as eight: the partners
+// and rows, with the particle's first bond in the lanes beyond its bonds, and the lanes
+// that hold its bonds (bit L: lane L).
+struct Tail8 {
+  std::int32_t j[8];
+  std::uint32_t k[8];
+  __mmask8 in = 0;
+};
+
+inline Tail8 tail8(const std::int32_t* partner, const std::uint32_t* index, std::size_t b,
+                   std::size_t b1) {
+  Tail8 t;
+  for (int L = 0; L < 8; ++L) {
+    const std::size_t o = kLane8[L];
+    const bool bond = b + o < b1;
+    t.j[o] = partner[bond ? b + o : b];
+    t.k[o] = index[bond ? b + o : b];
+    if (bond) t.in = static_cast<__mmask8>(t.in | (1 << L));
+  }
+  return t;
+}
+
+// Breaks the bonds of the lanes `over` holds, of bonds b .. b + 7 (attributes `stride`
+// doubles a bond, the weight second): weight 0, killed, and moved to the broken row.
+inline void break8(__mmask8 over, std::size_t b, double* attr, int stride, Bonds* bonds,
+                   const BondRows& rows) {
+  for (int L = 0; L < 8; ++L)
+    if (over & (1 << L)) {
+      const std::size_t bk = b + kLane8[L];
+      attr[stride * bk + 1] = 0;
+      bonds->kill(bk);
+      rows.index[bk] = rows.broken[rows.index[bk]];
+    }
+}
+
+// a[j[0]], ..., a[j[7]] in lane order.
+[[gnu::target("arch=x86-64-v4")]] inline __m512d pick8(const double* a, const std::int32_t* j) {
+  return _mm512_setr_pd(a[j[0]], a[j[2]], a[j[1]], a[j[3]], a[j[4]], a[j[6]], a[j[5]], a[j[7]]);
+}
+
+// The four lane sums (lane L holds bonds kLane8[L] mod 4) added as (0 + 1) + (2 + 3).
+[[gnu::target("arch=x86-64-v4")]] inline double finish8(__m256d sum) {
+  alignas(32) double s[4];
+  _mm256_store_pd(s, sum);
+  return (s[0] + s[2]) + (s[1] + s[3]);
+}
+
+// Adds the low half of v to the four lane sums, then the high half, in the lanes `in`
+// holds (bit L: lane L is a bond of the particle).
+[[gnu::target("arch=x86-64-v4")]] inline __m256d addHalves(__m256d sum, __m512d v, __mmask8 in) {
+  sum = _mm256_mask_add_pd(sum, in & 0xf, sum, _mm512_castpd512_pd256(v));
+  return _mm256_mask_add_pd(sum, in >> 4, sum, _mm512_extractf64x4_pd(v, 1));
+}
+
+}  // namespace pdq::peri
