@@ -27,8 +27,8 @@ export OMP_NUM_THREADS=1
 echo "load average $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc --all) cores (the machine is shared: rates are"
 echo " wall clock over the time loop; cpu rates are the busiest rank's CPU time, pdq's own work)"
 "$BENCH" bandwidth
-echo "(bytes per bond-step streamed by pdq: PMB 20 = 4 partner index + 16 attributes;"
-echo " LPS 56 = two passes of 4 + 24; partner positions come from cache)"
+echo "(bytes per bond-step streamed by pdq: PMB 8 = 4 partner index + 4 row number;"
+echo " LPS 16 = two passes of 4 + 4; partner positions and the rows come from cache)"
 "$BENCH" divider
 echo
 echo "== pdq vs LAMMPS PERI: ${N}^3 simple-cubic block, delta = 3 s, 200 steps =="

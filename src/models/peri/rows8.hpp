@@ -87,16 +87,19 @@ struct Tail8 {
   __mmask8 in = 0;
 };
 
-inline Tail8 tail8(const std::int32_t* partner, const std::uint32_t* index, std::size_t b,
-                   std::size_t b1) {
+[[gnu::target("arch=x86-64-v4")]] inline Tail8 tail8(const std::int32_t* partner,
+                                                     const std::uint32_t* index, std::size_t b,
+                                                     std::size_t b1) {
+  // Bonds 0 .. n - 1 of the eight are the particle's: bit o of `has` is bond o.
+  const auto has = static_cast<__mmask8>((1u << (b1 - b)) - 1);
   Tail8 t;
-  for (int L = 0; L < 8; ++L) {
-    const std::size_t o = kLane8[L];
-    const bool bond = b + o < b1;
-    t.j[o] = partner[bond ? b + o : b];
-    t.k[o] = index[bond ? b + o : b];
-    if (bond) t.in = static_cast<__mmask8>(t.in | (1 << L));
-  }
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(t.j),
+                      _mm256_mask_loadu_epi32(_mm256_set1_epi32(partner[b]), has, partner + b));
+  _mm256_storeu_si256(
+      reinterpret_cast<__m256i*>(t.k),
+      _mm256_mask_loadu_epi32(_mm256_set1_epi32(static_cast<int>(index[b])), has, index + b));
+  // Lane L holds bond kLane8[L]: bits 1 and 2 of each four trade places.
+  t.in = static_cast<__mmask8>((has & 0x99) | ((has & 0x22) << 1) | ((has & 0x44) >> 1));
   return t;
 }
 
