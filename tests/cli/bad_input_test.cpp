@@ -317,6 +317,20 @@ span = 1.0
   EXPECT_THAT(info.out, HasSubstr("particles.set pb.toml:12: vx on 10 particles"));
 }
 
+// PDQ_SIMD, which caps the peridynamic kernels' vector width, refuses a width it does not
+// know, as bad input, and the run writes nothing.
+TEST(CliBadInput, UnknownSimdWidth) {
+  const std::string dir = freshDir("bad_input_simd");
+  writeFile(dir + "/pb.toml", pmbSquare);
+  setenv("PDQ_SIMD", "avx1024", 1);
+  const auto r = runPdq({"run", "pb.toml"}, dir);
+  unsetenv("PDQ_SIMD");
+  EXPECT_EQ(r.code, 1) << r.all();
+  EXPECT_THAT(r.err, HasSubstr("PDQ_SIMD=avx1024: expected portable, avx2 or avx512"));
+  for (const auto& e : fs::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename(), "pb.toml") << "nothing written";
+}
+
 // pdq info estimates the sizes from the scenario before anything is made: a problem far
 // too large for the memory given is answered with the estimate, not made; on small ones
 // the estimate agrees with the counts of the problem made (particles within 2 %, bonds

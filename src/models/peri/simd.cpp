@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <stdexcept>
 #include <string>
+
+#include "engine/error.hpp"
 
 namespace pdq::peri {
 
@@ -16,12 +17,13 @@ Simd widestSimd() {
   const char* cap = std::getenv("PDQ_SIMD");
   if (!cap) return widest;
   const std::string c = cap;
-  const Simd asked =
-      c == "portable" ? Simd::portable
-      : c == "avx2"   ? Simd::avx2
-      : c == "avx512"
-          ? Simd::avx512
-          : throw std::runtime_error("PDQ_SIMD=" + c + ": expected portable, avx2 or avx512");
+  Simd asked = Simd::portable;
+  if (c == "avx512")
+    asked = Simd::avx512;
+  else if (c == "avx2")
+    asked = Simd::avx2;
+  else if (c != "portable")
+    throw InputError("environment", 0, "PDQ_SIMD=" + c + ": expected portable, avx2 or avx512");
   return std::min(asked, widest);
 }
 
