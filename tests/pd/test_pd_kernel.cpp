@@ -1,9 +1,10 @@
 // The PMB and LPS kernels of every vector width this CPU runs (AVX2, AVX-512) give the same
-// bits as the portable ones, for particles with any number of bonds (tails of 0-3 bonds), with and
-// without bonds breaking.
+// bits as the portable ones, for particles with any number of bonds (tails of 0-7 bonds), with
+// and without bonds breaking, and leave the bonds before and after the particle's alone.
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cstdio>
 #include <cstring>
 #include <random>
 #include <vector>
@@ -15,13 +16,16 @@
 namespace pdq::peri {
 namespace {
 
-// The vector widths this CPU runs.
+// The vector widths this CPU runs (whatever PDQ_SIMD says), and the bonds of other particles
+// around the kernels' range: before it and after it, as many as a vector's tail could reach.
 std::vector<Simd> widths() {
   std::vector<Simd> w;
   for (Simd s : {Simd::avx2, Simd::avx512})
-    if (s <= widestSimd()) w.push_back(s);
+    if (s <= processorSimd()) w.push_back(s);
+  std::printf("vector widths tested: %zu of 2 (AVX2, AVX-512)\n", w.size());
   return w;
 }
+constexpr std::size_t kBefore = 3, kAfter = 8;
 
 // Particle 0's nb bonds, all alive, for the kernels to kill the ones that break.
 Bonds bondsOfOne(int nAttr, std::size_t nb) {
@@ -81,21 +85,22 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
       for (double sc : {0.0, 0.05}) {
         for (std::size_t nb = 0; nb < 40; ++nb) {
           SCOPED_TRACE(static_cast<int>(width));
-          Bonds fastBonds = bondsOfOne(2, nb), portableBonds = bondsOfOne(2, nb);
+          const std::size_t total = kBefore + nb + kAfter;
+          Bonds fastBonds = bondsOfOne(2, total), portableBonds = bondsOfOne(2, total);
           const std::vector<std::int32_t> partner =
-              randomBonds(rng, x, nA, shared, fewRows, nb, fastBonds, portableBonds);
+              randomBonds(rng, x, nA, shared, fewRows, total, fastBonds, portableBonds);
           BondClasses classes;
           classes.update(fastBonds);
-          double* attr = nb ? fastBonds.attr(0) : nullptr;
-          double* attrB = nb ? portableBonds.attr(0) : nullptr;
+          double* attr = fastBonds.attr(0);
+          double* attrB = portableBonds.attr(0);
           double fast[3], portable[3];
           pmbKernel(width).force(
-              PmbView{partner.data(), attr, classes.rows(), x.data(), nA, sc, &fastBonds}, 0, 0, nb,
-              fast);
+              PmbView{partner.data(), attr, classes.rows(), x.data(), nA, sc, &fastBonds}, 0,
+              kBefore, kBefore + nb, fast);
           pmbKernelPortable(PmbView{partner.data(), attrB, {}, x.data(), nA, sc, &portableBonds}, 0,
-                            0, nb, portable);
+                            kBefore, kBefore + nb, portable);
           EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-          for (std::size_t b = 0; b < nb; ++b) {
+          for (std::size_t b = 0; b < total; ++b) {
             EXPECT_EQ(0, std::memcmp(attr + 2 * b, attrB + 2 * b, 2 * sizeof(double)))
                 << "the same bonds break";
             const BondRows r = classes.rows();
@@ -103,8 +108,8 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
                 << "bond " << b << " of " << nb << ": its row follows it as it breaks";
             if (sc > 0 && attr[2 * b + 1] == 0) ++(fewRows ? sharedBroken : broken);
           }
-          expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 2 * nb), 2);
-          expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 2 * nb), 2);
+          expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 2 * total), 2);
+          expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 2 * total), 2);
         }
       }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
@@ -130,28 +135,29 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
       for (double sc : {0.0, 0.05}) {
         for (std::size_t nb = 0; nb < 40; ++nb) {
           SCOPED_TRACE(static_cast<int>(width));
-          Bonds fastBonds = bondsOfOne(3, nb), portableBonds = bondsOfOne(3, nb);
+          const std::size_t total = kBefore + nb + kAfter;
+          Bonds fastBonds = bondsOfOne(3, total), portableBonds = bondsOfOne(3, total);
           const std::vector<std::int32_t> partner =
-              randomBonds(rng, x, nA, shared, fewRows, nb, fastBonds, portableBonds);
+              randomBonds(rng, x, nA, shared, fewRows, total, fastBonds, portableBonds);
           BondClasses classes;
           classes.update(fastBonds);
           if (fewRows && nb > 0) {
             EXPECT_LE(classes.count(), 8u) << "four rows and their twins";
           }
-          double* attr = nb ? fastBonds.attr(0) : nullptr;
-          double* attrB = nb ? portableBonds.attr(0) : nullptr;
+          double* attr = fastBonds.attr(0);
+          double* attrB = portableBonds.attr(0);
           const LpsView fastView{partner.data(), attr, classes.rows(), x.data(), nA,
                                  theta.data(),   1.5,  -0.7,           sc,       &fastBonds};
           const LpsView portableView{partner.data(), attrB, {},   x.data(), nA,
                                      theta.data(),   1.5,   -0.7, sc,       &portableBonds};
-          const double d1 = lpsKernels(width).dilatation(fastView, 0, 0, nb);
-          const double d2 = lpsKernelsPortable().dilatation(portableView, 0, 0, nb);
+          const double d1 = lpsKernels(width).dilatation(fastView, 0, kBefore, kBefore + nb);
+          const double d2 = lpsKernelsPortable().dilatation(portableView, 0, kBefore, kBefore + nb);
           EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
           double fast[3], portable[3];
-          lpsKernels(width).force(fastView, 0, 0, nb, 0.3, 0.8, fast);
-          lpsKernelsPortable().force(portableView, 0, 0, nb, 0.3, 0.8, portable);
+          lpsKernels(width).force(fastView, 0, kBefore, kBefore + nb, 0.3, 0.8, fast);
+          lpsKernelsPortable().force(portableView, 0, kBefore, kBefore + nb, 0.3, 0.8, portable);
           EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-          for (std::size_t b = 0; b < nb; ++b) {
+          for (std::size_t b = 0; b < total; ++b) {
             EXPECT_EQ(0, std::memcmp(attr + 3 * b, attrB + 3 * b, 3 * sizeof(double)))
                 << "the same bonds break";
             const BondRows r = classes.rows();
@@ -159,8 +165,8 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
                 << "bond " << b << " of " << nb << ": its row follows it as it breaks";
             if (sc > 0 && attr[3 * b + 1] == 0) ++(fewRows ? sharedBroken : broken);
           }
-          expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 3 * nb), 3);
-          expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 3 * nb), 3);
+          expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 3 * total), 3);
+          expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 3 * total), 3);
         }
       }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";

@@ -62,7 +62,7 @@ class Lps final : public PeriModel {
     if (kernels_.readRows) keepRows(P, B);
   }
 
-  // The AVX2 kernels' bond rows, rebuilt with each partner's 1/m (for the packed rows'
+  // The vector kernels' bond rows, rebuilt with each partner's 1/m (for the packed rows'
   // fourth column, as its bonds hold it) when the bonds have changed.
   BondRows keepRows(const Particles& P, const Bonds& B) {
     if (classes_.update(B)) {
@@ -137,7 +137,7 @@ class Lps final : public PeriModel {
   double kappa_ = 0, A_ = 0, B_ = 0;
   std::vector<double> invM_;         // 1 / m of the owned particles (they never move between ranks)
   std::vector<double> theta_;        // dilatation of every local particle, within a force step
-  BondClasses classes_;              // the AVX2 kernels' bond rows
+  BondClasses classes_;              // the vector kernels' bond rows
   std::vector<double> partnerInvM_;  // 1/m of every local particle that is a partner
 };
 

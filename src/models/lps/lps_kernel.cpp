@@ -2,6 +2,7 @@
 
 #include <immintrin.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pdq::peri {
@@ -190,7 +191,7 @@ struct Pairs {
 LpsKernels lpsKernelsPortable() { return {dilatationPortable, forcePortable, false}; }
 
 LpsKernels lpsKernels(Simd width) {
-  switch (width) {
+  switch (std::min(width, processorSimd())) {
     case Simd::avx512:
       return lpsKernelsAvx512();
     case Simd::avx2:

@@ -33,7 +33,7 @@ struct LpsKernels {
   bool readRows;  // the kernels read LpsView::rows (else only attr)
 };
 
-// The kernels of the given width (at most widestSimd()).
+// The kernels of the given width, or of the processor's widest if that is narrower.
 LpsKernels lpsKernels(Simd width = widestSimd());
 LpsKernels lpsKernelsPortable();
 LpsKernels lpsKernelsAvx512();

@@ -3,14 +3,15 @@
 // only where the processor has it; the files are not, so that no inline function of a
 // header they include comes out in AVX-512 for the rest of the library to call): the
 // partners' position rows transposed, and the bonds' (length, weight) rows. Lane L holds
-// bond kLane8[L] of the eight, so that each half holds bonds 0, 2, 1, 3 of its four, the
-// lane order of the AVX2 kernels; a kernel adds the low half's four bonds to its four lane
-// sums and then the high half's, the very order of the four-wide kernels, so the sums keep
-// their bits.
+// bond kLane8[L] of the eight, so that each half holds bonds 0, 2, 1, 3 of its four (the
+// order one in-lane unpack gives; the AVX2 PMB kernel's too); a kernel adds the low half's four
+// bonds to its four lane sums and then the high half's, the very order of the four-wide kernels, so
+// the sums keep their bits.
 #include <immintrin.h>
 
 // GCC 12's intrinsics leave the lanes they are told to overwrite uninitialised
-// (_mm512_undefined_pd), which its own warning then reports in the files that include this.
+// (_mm512_undefined_pd), which its own warning then reports.
+#pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 
 #include <cstddef>
@@ -20,7 +21,7 @@
 
 namespace pdq::peri {
 
-constexpr int kLane8[8] = {0, 2, 1, 3, 4, 6, 5, 7};
+inline constexpr int kLane8[8] = {0, 2, 1, 3, 4, 6, 5, 7};
 
 // Columns 0-3 of the eight partners' rows, less xi in 0-2; len = |(dx, dy, dz)|.
 struct Rows8 {
@@ -51,12 +52,6 @@ struct Rows8 {
       _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(r.dx, r.dx), _mm512_mul_pd(r.dy, r.dy)),
                     _mm512_mul_pd(r.dz, r.dz)));
   return r;
-}
-
-// The eight 32-bit numbers at p in lane order.
-[[gnu::target("arch=x86-64-v4")]] inline __m256i lanes8(const void* p) {
-  return _mm256_permutevar8x32_epi32(_mm256_loadu_si256(static_cast<const __m256i*>(p)),
-                                     _mm256_setr_epi32(0, 2, 1, 3, 4, 6, 5, 7));
 }
 
 // Reference length and weight of the eight bonds whose row numbers are at k.
@@ -136,3 +131,5 @@ inline void break8(__mmask8 over, std::size_t b, double* attr, int stride, Bonds
 }
 
 }  // namespace pdq::peri
+
+#pragma GCC diagnostic pop

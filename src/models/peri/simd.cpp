@@ -8,12 +8,13 @@
 
 namespace pdq::peri {
 
+Simd processorSimd() {
+  if (__builtin_cpu_supports("x86-64-v4")) return Simd::avx512;
+  return __builtin_cpu_supports("avx2") ? Simd::avx2 : Simd::portable;
+}
+
 Simd widestSimd() {
-  Simd widest = Simd::portable;
-  if (__builtin_cpu_supports("x86-64-v4"))
-    widest = Simd::avx512;
-  else if (__builtin_cpu_supports("avx2"))
-    widest = Simd::avx2;
+  const Simd widest = processorSimd();
   const char* cap = std::getenv("PDQ_SIMD");
   if (!cap) return widest;
   const std::string c = cap;

@@ -2,6 +2,7 @@
 
 #include <immintrin.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace pdq::peri {
@@ -117,7 +118,7 @@ void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::siz
 }
 
 PmbKernel pmbKernel(Simd width) {
-  switch (width) {
+  switch (std::min(width, processorSimd())) {
     case Simd::avx512:
       return {pmbKernelAvx512, true};
     case Simd::avx2:

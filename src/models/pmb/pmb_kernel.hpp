@@ -28,7 +28,7 @@ struct PmbKernel {
   bool readRows;  // it reads PmbView::rows (else only attr)
 };
 
-// The kernel of the given width (at most widestSimd()).
+// The kernel of the given width, or of the processor's widest if that is narrower.
 PmbKernel pmbKernel(Simd width = widestSimd());
 void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
                        double acc[3]);
