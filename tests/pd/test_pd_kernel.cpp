@@ -41,33 +41,63 @@ void expectKilledAsBroken(const Bonds& bonds, const std::vector<double>& attr, i
     EXPECT_EQ(bonds.alive(b), attr[stride * b + 1] != 0) << "bond " << b;
 }
 
-// Particle 0's nb bonds to random partners, in both sets of bonds alike: length and weight
-// from one of the `shared` rows, as on a lattice, or each bond its own (stretched or
-// compressed); a third attribute, where there is one, is the partner's 1/m (its position
-// row's fourth column).
-std::vector<std::int32_t> randomBonds(std::mt19937_64& rng, const std::vector<double>& x,
-                                      std::size_t nA,
-                                      const std::vector<std::array<double, 2>>& shared,
-                                      bool fewRows, std::size_t nb, Bonds& fast, Bonds& portable) {
-  std::uniform_real_distribution<double> u(-1, 1);
-  const std::size_t particles = x.size() / nA;
-  std::vector<std::int32_t> partner(nb);
-  for (std::size_t b = 0; b < nb; ++b) {
-    partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
-    const double* xj = &x[partner[b] * nA];
-    const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
-    double* a = fast.attr(b);
-    if (fewRows) {
-      std::copy_n(shared[rng() % shared.size()].data(), 2, a);
-    } else {
-      a[0] = len * (1 + 0.1 * u(rng));
-      a[1] = 1 + u(rng);
+// One case: particle 0's nb bonds, between kBefore and kAfter bonds of other particles, to
+// random partners, in two sets of bonds alike (for the fast and the portable kernel): length
+// and weight from one of the `shared` rows, as on a lattice, or each bond its own (stretched
+// or compressed); a third attribute, where there is one, is the partner's 1/m (its position
+// row's fourth column). The fast set's rows are made.
+struct Case {
+  std::size_t nb, total;
+  Bonds fast, portable;
+  std::vector<std::int32_t> partner;
+  BondClasses classes;
+
+  Case(std::mt19937_64& rng, const std::vector<double>& x, std::size_t nA,
+       const std::vector<std::array<double, 2>>& shared, bool fewRows, int nAttr, std::size_t nb)
+      : nb(nb),
+        total(kBefore + nb + kAfter),
+        fast(bondsOfOne(nAttr, total)),
+        portable(bondsOfOne(nAttr, total)),
+        partner(total) {
+    std::uniform_real_distribution<double> u(-1, 1);
+    const std::size_t particles = x.size() / nA;
+    for (std::size_t b = 0; b < total; ++b) {
+      partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
+      const double* xj = &x[partner[b] * nA];
+      const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
+      double* a = fast.attr(b);
+      if (fewRows) {
+        std::copy_n(shared[rng() % shared.size()].data(), 2, a);
+      } else {
+        a[0] = len * (1 + 0.1 * u(rng));
+        a[1] = 1 + u(rng);
+      }
+      if (nAttr > 2) a[2] = xj[3];
+      std::copy_n(a, nAttr, portable.attr(b));
     }
-    if (fast.nAttr() > 2) a[2] = xj[3];
-    std::copy_n(a, fast.nAttr(), portable.attr(b));
+    classes.update(fast);
   }
-  return partner;
-}
+
+  // After the kernels: the same bonds broke in both sets, and each fast bond's row follows
+  // its attributes; returns how many bonds are broken.
+  std::size_t expectSameBonds() {
+    const int stride = fast.nAttr();
+    const double* attr = fast.attr(0);
+    const double* attrB = portable.attr(0);
+    const BondRows r = classes.rows();
+    std::size_t broken = 0;
+    for (std::size_t b = 0; b < total; ++b) {
+      EXPECT_EQ(0, std::memcmp(attr + stride * b, attrB + stride * b, stride * sizeof(double)))
+          << "the same bonds break";
+      EXPECT_EQ(0, std::memcmp(r.row + 2 * r.index[b], attr + stride * b, 2 * sizeof(double)))
+          << "bond " << b << " of " << nb << ": its row follows it as it breaks";
+      broken += attr[stride * b + 1] == 0;
+    }
+    expectKilledAsBroken(fast, std::vector<double>(attr, attr + stride * total), stride);
+    expectKilledAsBroken(portable, std::vector<double>(attrB, attrB + stride * total), stride);
+    return broken;
+  }
+};
 
 // The fast PMB kernel reads the bonds' (length, weight) rows (BondClasses); the portable
 // one the attributes themselves. Bonds with a few shared rows, as on a lattice, and bonds
@@ -85,31 +115,16 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
       for (double sc : {0.0, 0.05}) {
         for (std::size_t nb = 0; nb < 40; ++nb) {
           SCOPED_TRACE(static_cast<int>(width));
-          const std::size_t total = kBefore + nb + kAfter;
-          Bonds fastBonds = bondsOfOne(2, total), portableBonds = bondsOfOne(2, total);
-          const std::vector<std::int32_t> partner =
-              randomBonds(rng, x, nA, shared, fewRows, total, fastBonds, portableBonds);
-          BondClasses classes;
-          classes.update(fastBonds);
-          double* attr = fastBonds.attr(0);
-          double* attrB = portableBonds.attr(0);
+          Case c(rng, x, nA, shared, fewRows, 2, nb);
           double fast[3], portable[3];
-          pmbKernel(width).force(
-              PmbView{partner.data(), attr, classes.rows(), x.data(), nA, sc, &fastBonds}, 0,
-              kBefore, kBefore + nb, fast);
-          pmbKernelPortable(PmbView{partner.data(), attrB, {}, x.data(), nA, sc, &portableBonds}, 0,
-                            kBefore, kBefore + nb, portable);
+          pmbKernel(width).force(PmbView{c.partner.data(), c.fast.attr(0), c.classes.rows(),
+                                         x.data(), nA, sc, &c.fast},
+                                 0, kBefore, kBefore + nb, fast);
+          pmbKernelPortable(
+              PmbView{c.partner.data(), c.portable.attr(0), {}, x.data(), nA, sc, &c.portable}, 0,
+              kBefore, kBefore + nb, portable);
           EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-          for (std::size_t b = 0; b < total; ++b) {
-            EXPECT_EQ(0, std::memcmp(attr + 2 * b, attrB + 2 * b, 2 * sizeof(double)))
-                << "the same bonds break";
-            const BondRows r = classes.rows();
-            EXPECT_EQ(0, std::memcmp(r.row + 2 * r.index[b], attr + 2 * b, 2 * sizeof(double)))
-                << "bond " << b << " of " << nb << ": its row follows it as it breaks";
-            if (sc > 0 && attr[2 * b + 1] == 0) ++(fewRows ? sharedBroken : broken);
-          }
-          expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 2 * total), 2);
-          expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 2 * total), 2);
+          (fewRows ? sharedBroken : broken) += c.expectSameBonds();
         }
       }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
@@ -135,21 +150,23 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
       for (double sc : {0.0, 0.05}) {
         for (std::size_t nb = 0; nb < 40; ++nb) {
           SCOPED_TRACE(static_cast<int>(width));
-          const std::size_t total = kBefore + nb + kAfter;
-          Bonds fastBonds = bondsOfOne(3, total), portableBonds = bondsOfOne(3, total);
-          const std::vector<std::int32_t> partner =
-              randomBonds(rng, x, nA, shared, fewRows, total, fastBonds, portableBonds);
-          BondClasses classes;
-          classes.update(fastBonds);
+          Case c(rng, x, nA, shared, fewRows, 3, nb);
           if (fewRows && nb > 0) {
-            EXPECT_LE(classes.count(), 8u) << "four rows and their twins";
+            EXPECT_LE(c.classes.count(), 8u) << "four rows and their twins";
           }
-          double* attr = fastBonds.attr(0);
-          double* attrB = portableBonds.attr(0);
-          const LpsView fastView{partner.data(), attr, classes.rows(), x.data(), nA,
-                                 theta.data(),   1.5,  -0.7,           sc,       &fastBonds};
-          const LpsView portableView{partner.data(), attrB, {},   x.data(), nA,
-                                     theta.data(),   1.5,   -0.7, sc,       &portableBonds};
+          const LpsView fastView{c.partner.data(),
+                                 c.fast.attr(0),
+                                 c.classes.rows(),
+                                 x.data(),
+                                 nA,
+                                 theta.data(),
+                                 1.5,
+                                 -0.7,
+                                 sc,
+                                 &c.fast};
+          const LpsView portableView{
+              c.partner.data(), c.portable.attr(0), {}, x.data(), nA, theta.data(), 1.5, -0.7, sc,
+              &c.portable};
           const double d1 = lpsKernels(width).dilatation(fastView, 0, kBefore, kBefore + nb);
           const double d2 = lpsKernelsPortable().dilatation(portableView, 0, kBefore, kBefore + nb);
           EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
@@ -157,16 +174,7 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
           lpsKernels(width).force(fastView, 0, kBefore, kBefore + nb, 0.3, 0.8, fast);
           lpsKernelsPortable().force(portableView, 0, kBefore, kBefore + nb, 0.3, 0.8, portable);
           EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-          for (std::size_t b = 0; b < total; ++b) {
-            EXPECT_EQ(0, std::memcmp(attr + 3 * b, attrB + 3 * b, 3 * sizeof(double)))
-                << "the same bonds break";
-            const BondRows r = classes.rows();
-            EXPECT_EQ(0, std::memcmp(r.row + 2 * r.index[b], attr + 3 * b, 2 * sizeof(double)))
-                << "bond " << b << " of " << nb << ": its row follows it as it breaks";
-            if (sc > 0 && attr[3 * b + 1] == 0) ++(fewRows ? sharedBroken : broken);
-          }
-          expectKilledAsBroken(fastBonds, std::vector<double>(attr, attr + 3 * total), 3);
-          expectKilledAsBroken(portableBonds, std::vector<double>(attrB, attrB + 3 * total), 3);
+          (fewRows ? sharedBroken : broken) += c.expectSameBonds();
         }
       }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";

@@ -14,9 +14,9 @@ namespace pdq::peri {
 struct LpsView {
   const std::int32_t* partner;  // local index of each bond's partner
   double* attr;                 // per bond: reference length, ω V_j w (0 once broken), 1/m_j
-  BondRows rows;                // reference length and weight by row (the AVX2 kernels')
+  BondRows rows;                // reference length and weight by row (the vector kernels')
   const double* x;              // position rows (x, y, z first), nA doubles each; the
-                                // AVX2 kernels read 1/m of the particle in column 3
+                                // vector kernels read 1/m of the particle in column 3
   std::size_t nA;
   const double* theta;     // dilatation of every local particle (owned and ghosts)
   double a, b;             // A/ρ and B/ρ of the force state
