@@ -27,7 +27,7 @@ export OMP_NUM_THREADS=1
 echo "load average $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc --all) cores (the machine is shared: rates are"
 echo " wall clock over the time loop; cpu rates are the busiest rank's CPU time, pdq's own work)"
 "$BENCH" bandwidth
-echo "(bytes per bond-step streamed by pdq: PMB 8 = 4 partner index + 4 row number;"
+echo "(bytes per bond-step streamed by pdq: PMB 8 = 4 partner index + 4 pair-row number;"
 echo " LPS 16 = two passes of 4 + 4; partner positions and the rows come from cache)"
 "$BENCH" divider
 echo

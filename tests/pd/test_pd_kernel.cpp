@@ -17,7 +17,8 @@ namespace pdq::peri {
 namespace {
 
 // The vector widths this CPU runs (whatever PDQ_SIMD says), and the bonds of other particles
-// around the kernels' range: before it and after it, as many as a vector's tail could reach.
+// around the kernels' range: before it, and after it none (the arrays end with the particle's
+// bonds: the kernels copy their last bonds) or as many as a vector's tail reads in place.
 std::vector<Simd> widths() {
   std::vector<Simd> w;
   for (Simd s : {Simd::avx2, Simd::avx512})
@@ -41,7 +42,7 @@ void expectKilledAsBroken(const Bonds& bonds, const std::vector<double>& attr, i
     EXPECT_EQ(bonds.alive(b), attr[stride * b + 1] != 0) << "bond " << b;
 }
 
-// One case: particle 0's nb bonds, between kBefore and kAfter bonds of other particles, to
+// One case: particle 0's nb bonds, between kBefore and `after` bonds of other particles, to
 // random partners, in two sets of bonds alike (for the fast and the portable kernel): length
 // and weight from one of the `shared` rows, as on a lattice, or each bond its own (stretched
 // or compressed); a third attribute, where there is one, is the partner's 1/m (its position
@@ -53,9 +54,10 @@ struct Case {
   BondClasses classes;
 
   Case(std::mt19937_64& rng, const std::vector<double>& x, std::size_t nA,
-       const std::vector<std::array<double, 2>>& shared, bool fewRows, int nAttr, std::size_t nb)
+       const std::vector<std::array<double, 2>>& shared, bool fewRows, int nAttr, std::size_t nb,
+       std::size_t after)
       : nb(nb),
-        total(kBefore + nb + kAfter),
+        total(kBefore + nb + after),
         fast(bondsOfOne(nAttr, total)),
         portable(bondsOfOne(nAttr, total)),
         partner(total) {
@@ -89,8 +91,14 @@ struct Case {
     for (std::size_t b = 0; b < total; ++b) {
       EXPECT_EQ(0, std::memcmp(attr + stride * b, attrB + stride * b, stride * sizeof(double)))
           << "the same bonds break";
-      EXPECT_EQ(0, std::memcmp(r.row + 2 * r.index[b], attr + stride * b, 2 * sizeof(double)))
+      EXPECT_EQ(0, std::memcmp(rowOf(r, b), attr + stride * b, 2 * sizeof(double)))
           << "bond " << b << " of " << nb << ": its row follows it as it breaks";
+      // The pair row's second half is the next bond's, but for the one before the particle,
+      // whose second half no kernel of this particle may write.
+      if (b + 1 < total && b + 1 != kBefore) {
+        EXPECT_EQ(0, std::memcmp(rowOf(r, b) + 2, attr + stride * (b + 1), 2 * sizeof(double)))
+            << "bond " << b << " of " << nb << ": its pair row follows the next bond";
+      }
       broken += attr[stride * b + 1] == 0;
     }
     expectKilledAsBroken(fast, std::vector<double>(attr, attr + stride * total), stride);
@@ -113,19 +121,20 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
   for (Simd width : widths())
     for (bool fewRows : {false, true})
       for (double sc : {0.0, 0.05}) {
-        for (std::size_t nb = 0; nb < 40; ++nb) {
-          SCOPED_TRACE(static_cast<int>(width));
-          Case c(rng, x, nA, shared, fewRows, 2, nb);
-          double fast[3], portable[3];
-          pmbKernel(width).force(PmbView{c.partner.data(), c.fast.attr(0), c.classes.rows(),
-                                         x.data(), nA, sc, &c.fast},
-                                 0, kBefore, kBefore + nb, fast);
-          pmbKernelPortable(
-              PmbView{c.partner.data(), c.portable.attr(0), {}, x.data(), nA, sc, &c.portable}, 0,
-              kBefore, kBefore + nb, portable);
-          EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-          (fewRows ? sharedBroken : broken) += c.expectSameBonds();
-        }
+        for (std::size_t nb = 0; nb < 40; ++nb)
+          for (std::size_t after : {std::size_t{0}, kAfter}) {
+            SCOPED_TRACE(static_cast<int>(width));
+            Case c(rng, x, nA, shared, fewRows, 2, nb, after);
+            double fast[3], portable[3];
+            pmbKernel(width).force(PmbView{c.partner.data(), c.fast.attr(0), c.classes.rows(),
+                                           x.data(), nA, sc, &c.fast},
+                                   0, kBefore, kBefore + nb, fast);
+            pmbKernelPortable(
+                PmbView{c.partner.data(), c.portable.attr(0), {}, x.data(), nA, sc, &c.portable}, 0,
+                kBefore, kBefore + nb, portable);
+            EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
+            (fewRows ? sharedBroken : broken) += c.expectSameBonds();
+          }
       }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
   EXPECT_GT(sharedBroken, 50u);
@@ -148,41 +157,44 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
   for (Simd width : widths())
     for (bool fewRows : {false, true})
       for (double sc : {0.0, 0.05}) {
-        for (std::size_t nb = 0; nb < 40; ++nb) {
-          SCOPED_TRACE(static_cast<int>(width));
-          Case c(rng, x, nA, shared, fewRows, 3, nb);
-          if (fewRows && nb > 0) {
-            EXPECT_LE(c.classes.count(), 8u) << "four rows and their twins";
+        for (std::size_t nb = 0; nb < 40; ++nb)
+          for (std::size_t after : {std::size_t{0}, kAfter}) {
+            SCOPED_TRACE(static_cast<int>(width));
+            Case c(rng, x, nA, shared, fewRows, 3, nb, after);
+            if (fewRows && nb > 0) {
+              EXPECT_LE(c.classes.count(), 8u) << "four rows and their twins";
+            }
+            const LpsView fastView{c.partner.data(),
+                                   c.fast.attr(0),
+                                   c.classes.rows(),
+                                   x.data(),
+                                   nA,
+                                   theta.data(),
+                                   1.5,
+                                   -0.7,
+                                   sc,
+                                   &c.fast};
+            const LpsView portableView{
+                c.partner.data(), c.portable.attr(0), {}, x.data(), nA, theta.data(), 1.5, -0.7, sc,
+                &c.portable};
+            const double d1 = lpsKernels(width).dilatation(fastView, 0, kBefore, kBefore + nb);
+            const double d2 =
+                lpsKernelsPortable().dilatation(portableView, 0, kBefore, kBefore + nb);
+            EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
+            double fast[3], portable[3];
+            lpsKernels(width).force(fastView, 0, kBefore, kBefore + nb, 0.3, 0.8, fast);
+            lpsKernelsPortable().force(portableView, 0, kBefore, kBefore + nb, 0.3, 0.8, portable);
+            EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
+            (fewRows ? sharedBroken : broken) += c.expectSameBonds();
           }
-          const LpsView fastView{c.partner.data(),
-                                 c.fast.attr(0),
-                                 c.classes.rows(),
-                                 x.data(),
-                                 nA,
-                                 theta.data(),
-                                 1.5,
-                                 -0.7,
-                                 sc,
-                                 &c.fast};
-          const LpsView portableView{
-              c.partner.data(), c.portable.attr(0), {}, x.data(), nA, theta.data(), 1.5, -0.7, sc,
-              &c.portable};
-          const double d1 = lpsKernels(width).dilatation(fastView, 0, kBefore, kBefore + nb);
-          const double d2 = lpsKernelsPortable().dilatation(portableView, 0, kBefore, kBefore + nb);
-          EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
-          double fast[3], portable[3];
-          lpsKernels(width).force(fastView, 0, kBefore, kBefore + nb, 0.3, 0.8, fast);
-          lpsKernelsPortable().force(portableView, 0, kBefore, kBefore + nb, 0.3, 0.8, portable);
-          EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-          (fewRows ? sharedBroken : broken) += c.expectSameBonds();
-        }
       }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
   EXPECT_GT(sharedBroken, 50u);
 }
 
 // The rows are rebuilt when the bonds change (here: put back to a saved state) or when the
-// model rewrites their attributes (forget), and kept otherwise.
+// model rewrites their attributes (forget), and kept otherwise; each pair row holds its bond's
+// row and the next one's, and its broken twins zero the weight of one bond or the other.
 TEST(PdKernel, BondRowsFollowTheBonds) {
   Bonds bonds = bondsOfOne(3, 6);
   for (std::size_t b = 0; b < 6; ++b) {
@@ -194,25 +206,34 @@ TEST(PdKernel, BondRowsFollowTheBonds) {
   BondClasses classes;
   classes.update(bonds);
   EXPECT_EQ(classes.count(), 4u) << "two rows and their broken twins";
-  EXPECT_NE(classes.rows().index[0], classes.rows().index[1]);
-  EXPECT_EQ(classes.rows().index[0], classes.rows().index[2]);
+  EXPECT_NE(classes.rows().pair[0], classes.rows().pair[1]);
+  EXPECT_EQ(classes.rows().pair[0], classes.rows().pair[2]);
   bonds.attr(0)[0] = 7;  // written by no kernel, unseen until forgotten
   classes.update(bonds);
-  EXPECT_EQ(classes.rows().row[2 * classes.rows().index[0]], 1.0);
+  EXPECT_EQ(rowOf(classes.rows(), 0)[0], 1.0);
   classes.forget();
   classes.update(bonds);
-  EXPECT_EQ(classes.rows().row[2 * classes.rows().index[0]], 7.0);
+  EXPECT_EQ(rowOf(classes.rows(), 0)[0], 7.0);
   EXPECT_EQ(classes.count(), 6u);
   bonds.restore(intact);
   classes.update(bonds);
-  EXPECT_EQ(classes.rows().row[2 * classes.rows().index[0]], 1.0);
+  EXPECT_EQ(rowOf(classes.rows(), 0)[0], 1.0);
   EXPECT_EQ(classes.count(), 4u);
   const BondRows r = classes.rows();
   for (std::size_t b = 0; b < 6; ++b) {
-    const double* twin = r.row + 2 * r.broken[r.index[b]];
-    EXPECT_EQ(twin[0], bonds.attr(b)[0]);
-    EXPECT_EQ(twin[1], 0.0);
-    EXPECT_EQ(r.broken[r.broken[r.index[b]]], r.broken[r.index[b]]) << "a twin is its own";
+    const double* own = rowOf(r, b);
+    const double* next = bonds.attr(b + 1 < 6 ? b + 1 : b);
+    EXPECT_EQ(own[0], bonds.attr(b)[0]);
+    EXPECT_EQ(own[2], next[0]) << "the next bond's row (the last bond's own)";
+    for (int s = 0; s < 2; ++s) {
+      const std::uint32_t twin = r.broken[2 * r.pair[b] + s];
+      const double* t = r.row + 4 * twin;
+      EXPECT_EQ(t[0], own[0]);
+      EXPECT_EQ(t[2], own[2]);
+      EXPECT_EQ(t[1], s == 0 ? 0.0 : own[1]);
+      EXPECT_EQ(t[3], s == 1 ? 0.0 : own[3]);
+      EXPECT_EQ(r.broken[2 * twin + s], twin) << "a twin is its own";
+    }
   }
 }
 

@@ -7,7 +7,7 @@
 namespace pdq::peri {
 namespace {
 
-// Bonds b .. b + 7 (j: their partners, k: their rows) into the dilatation's lane sums.
+// Bonds b .. b + 7 (j: their partners, k: their pair numbers) into the dilatation's lane sums.
 [[gnu::target("arch=x86-64-v4")]] inline __m256d dilatation8(const LpsView& v, const double* xi,
                                                              const std::int32_t* j,
                                                              const std::uint32_t* k, __mmask8 in,
@@ -24,10 +24,10 @@ struct Particle {
 
 // The same into the force's lane sums, breaking overstretched bonds.
 [[gnu::target("arch=x86-64-v4")]] inline void force8(const LpsView& v, const double* xi,
-                                                     const Particle& c, std::size_t b,
-                                                     const std::int32_t* j, const std::uint32_t* k,
-                                                     __mmask8 in, __m256d& ax, __m256d& ay,
-                                                     __m256d& az) {
+                                                     const Particle& c, std::size_t b0,
+                                                     std::size_t b, const std::int32_t* j,
+                                                     const std::uint32_t* k, __mmask8 in,
+                                                     __m256d& ax, __m256d& ay, __m256d& az) {
   const Rows8 r = rows8(v.x, v.nA, j, xi);
   auto [len0, w] = pairs8(v.rows, k);
   const __m512d invMj = r.c3, thj = pick8(v.theta, j);
@@ -35,7 +35,7 @@ struct Particle {
   if (v.criticalStretch > 0) {
     const __mmask8 over = _mm512_mask_cmp_pd_mask(in, ext, _mm512_mul_pd(c.sc, len0), _CMP_GT_OQ);
     if (over) {
-      break8(over, b, v.attr, 3, v.bonds, v.rows);
+      break8(over, b0, b, v.attr, 3, v.bonds, v.rows);
       w = _mm512_maskz_mov_pd(static_cast<__mmask8>(~over), w);
     }
   }
@@ -53,10 +53,14 @@ struct Particle {
   const double* xi = v.x + i * v.nA;
   __m256d s = _mm256_setzero_pd();
   std::size_t b = b0;
-  for (; b + 8 <= b1; b += 8) s = dilatation8(v, xi, v.partner + b, v.rows.index + b, 0xff, s);
+  for (; b + 8 <= b1; b += 8) s = dilatation8(v, xi, v.partner + b, v.rows.pair + b, 0xff, s);
   if (b < b1) {
-    const Tail8 t = tail8(v.partner, v.rows.index, b, b1);
-    s = dilatation8(v, xi, t.j, t.k, t.in, s);
+    if (b + 8 <= v.bonds->count()) {
+      s = dilatation8(v, xi, v.partner + b, v.rows.pair + b, lanes8(b1 - b), s);
+    } else {
+      const Tail8 t = tail8(v.partner, v.rows.pair, b, b1);
+      s = dilatation8(v, xi, t.j, t.k, t.in, s);
+    }
   }
   return finish8(s);
 }
@@ -70,10 +74,14 @@ struct Particle {
   __m256d ax = _mm256_setzero_pd(), ay = _mm256_setzero_pd(), az = _mm256_setzero_pd();
   std::size_t b = b0;
   for (; b + 8 <= b1; b += 8)
-    force8(v, xi, c, b, v.partner + b, v.rows.index + b, 0xff, ax, ay, az);
+    force8(v, xi, c, b0, b, v.partner + b, v.rows.pair + b, 0xff, ax, ay, az);
   if (b < b1) {
-    const Tail8 t = tail8(v.partner, v.rows.index, b, b1);
-    force8(v, xi, c, b, t.j, t.k, t.in, ax, ay, az);
+    if (b + 8 <= v.bonds->count()) {
+      force8(v, xi, c, b0, b, v.partner + b, v.rows.pair + b, lanes8(b1 - b), ax, ay, az);
+    } else {
+      const Tail8 t = tail8(v.partner, v.rows.pair, b, b1);
+      force8(v, xi, c, b0, b, t.j, t.k, t.in, ax, ay, az);
+    }
   }
   acc[0] = finish8(ax);
   acc[1] = finish8(ay);

@@ -25,7 +25,7 @@ struct Attrs {
 template <bool kRows>
 inline Attrs attrsOf(const LpsView& v, std::size_t b) {
   if constexpr (kRows) {
-    const double* r = v.rows.row + 2 * v.rows.index[b];
+    const double* r = rowOf(v.rows, b);
     return {r[0], r[1], v.x[v.partner[b] * v.nA + 3]};
   } else {
     const double* ab = v.attr + 3 * b;
@@ -41,9 +41,10 @@ inline double dilatationBond(const LpsView& v, const double* xi, std::size_t b) 
   return ab.w * ab.len0 * (len - ab.len0);
 }
 
+// Bond b of the particle whose bonds start at b0.
 template <bool kRows>
-inline void forceBond(const LpsView& v, const double* xi, std::size_t b, double qi, double invMi,
-                      double* sx, double* sy, double* sz) {
+inline void forceBond(const LpsView& v, const double* xi, std::size_t b0, std::size_t b, double qi,
+                      double invMi, double* sx, double* sy, double* sz) {
   const double* xj = v.x + v.partner[b] * v.nA;
   Attrs ab = attrsOf<kRows>(v, b);
   double r[3];
@@ -54,7 +55,7 @@ inline void forceBond(const LpsView& v, const double* xi, std::size_t b, double 
     ab.w = 0;
     v.attr[3 * b + 1] = 0;
     v.bonds->kill(b);
-    if (kRows) v.rows.index[b] = v.rows.broken[v.rows.index[b]];
+    if (kRows) breakRows(v.rows, b0, b);
   }
   const double rk = ab.w * (v.a * ab.len0 * (qi + v.theta[v.partner[b]] * ab.invMj) +
                             v.b * (invMi + ab.invMj) * ext);
@@ -82,8 +83,10 @@ void forcePortable(const LpsView& v, std::size_t i, std::size_t b0, std::size_t 
   double lx[4] = {0, 0, 0, 0}, ly[4] = {0, 0, 0, 0}, lz[4] = {0, 0, 0, 0};
   std::size_t b = b0;
   for (; b + 4 <= b1; b += 4)
-    for (int k = 0; k < 4; ++k) forceBond<false>(v, xi, b + k, qi, invMi, &lx[k], &ly[k], &lz[k]);
-  for (int k = 0; b < b1; ++b, ++k) forceBond<false>(v, xi, b, qi, invMi, &lx[k], &ly[k], &lz[k]);
+    for (int k = 0; k < 4; ++k)
+      forceBond<false>(v, xi, b0, b + k, qi, invMi, &lx[k], &ly[k], &lz[k]);
+  for (int k = 0; b < b1; ++b, ++k)
+    forceBond<false>(v, xi, b0, b, qi, invMi, &lx[k], &ly[k], &lz[k]);
   acc[0] = lanes(lx);
   acc[1] = lanes(ly);
   acc[2] = lanes(lz);
@@ -112,16 +115,16 @@ struct Four {
   return f;
 }
 
-// Reference length and weight of bonds b .. b + 3, from their rows (BondRows).
+// Reference length and weight of bonds b .. b + 3, from the pair rows of b and b + 2.
 struct Pairs {
   __m256d len0, w;
 };
 
 [[gnu::target("avx2")]] inline Pairs pairs(const BondRows& r, std::size_t b) {
-  const std::uint32_t* k = r.index + b;
+  const __m256d p01 = _mm256_loadu_pd(rowOf(r, b)), p23 = _mm256_loadu_pd(rowOf(r, b + 2));
   // Halves (bond 0 | bond 2) and (bond 1 | bond 3): one unpack each gives lanes 0, 1, 2, 3.
-  const __m256d p02 = _mm256_loadu2_m128d(r.row + 2 * k[2], r.row + 2 * k[0]);
-  const __m256d p13 = _mm256_loadu2_m128d(r.row + 2 * k[3], r.row + 2 * k[1]);
+  const __m256d p02 = _mm256_permute2f128_pd(p01, p23, 0x20);
+  const __m256d p13 = _mm256_permute2f128_pd(p01, p23, 0x31);
   return {_mm256_unpacklo_pd(p02, p13), _mm256_unpackhi_pd(p02, p13)};
 }
 
@@ -163,7 +166,7 @@ struct Pairs {
           if (m & (1 << k)) {
             v.attr[3 * (b + k) + 1] = 0;
             v.bonds->kill(b + k);
-            v.rows.index[b + k] = v.rows.broken[v.rows.index[b + k]];
+            breakRows(v.rows, b0, b + k);
           }
         w = _mm256_andnot_pd(over, w);
       }
@@ -180,7 +183,8 @@ struct Pairs {
   _mm256_store_pd(lx, ax);
   _mm256_store_pd(ly, ay);
   _mm256_store_pd(lz, az);
-  for (int k = 0; b < b1; ++b, ++k) forceBond<true>(v, xi, b, qi, invMi, &lx[k], &ly[k], &lz[k]);
+  for (int k = 0; b < b1; ++b, ++k)
+    forceBond<true>(v, xi, b0, b, qi, invMi, &lx[k], &ly[k], &lz[k]);
   acc[0] = lanes(lx);
   acc[1] = lanes(ly);
   acc[2] = lanes(lz);

@@ -1,10 +1,11 @@
 #pragma once
-// The distinct (reference length, weight) pairs of the bonds, and each bond's pair. The
-// bonds of a regular lattice hold a few hundred distinct pairs, so a kernel that reads a
-// 4-byte row number per bond streams a fraction of the bytes of the pairs themselves, and
-// reads the very same doubles. The bonds' own attributes stay the record (restart files,
-// energies, damage); the rows are rebuilt from them whenever the bonds change
-// (Bonds::version) or the model rewrites them (forget).
+// The bonds' (reference length, weight) rows, two consecutive bonds' to a row. The bonds of a
+// regular lattice hold a few hundred distinct (length, weight) and a few thousand distinct
+// pairs of them, so a kernel that reads a 4-byte row number per bond streams a fraction of
+// the bytes of the attributes themselves, reads the very same doubles, and gets two bonds'
+// in one 32-byte load. The bonds' own attributes stay the record (restart files, energies,
+// damage); the rows are rebuilt from them whenever the bonds change (Bonds::version) or the
+// model rewrites them (forget).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -13,14 +14,27 @@
 
 namespace pdq::peri {
 
-// What a kernel reads: row[2 index[b]] and row[2 index[b] + 1] are bond b's first two
-// attributes, its reference length and weight. A kernel that breaks bond b sets
-// index[b] = broken[index[b]], the same length with weight 0, as it zeroes the bond's own.
+// What a kernel reads: bonds b and b + 1 side by side. pair[b] is the number of their pair
+// row, row[4 pair[b] ..] its four doubles (length and weight of bond b, then of b + 1), and
+// broken[2 p + s] the pair row p with its bond s (0: the first) broken, weight 0. A vector
+// kernel takes the rows of bonds b, b + 2, ... for its lanes; a bond's own length and weight
+// are the first half of its pair row (rowOf). The last bond of a particle shares its row with
+// the next particle's first, whose half is read only in lanes a kernel masks: so a kernel
+// that breaks a bond updates only pair numbers of its own particle (breakRows), and no thread
+// writes another's.
 struct BondRows {
-  std::uint32_t* index = nullptr;
+  std::uint32_t* pair = nullptr;
   const double* row = nullptr;
   const std::uint32_t* broken = nullptr;
 };
+
+inline const double* rowOf(const BondRows& r, std::size_t b) { return r.row + 4 * r.pair[b]; }
+
+// Bond b, of the particle whose bonds start at b0, has broken.
+inline void breakRows(const BondRows& r, std::size_t b0, std::size_t b) {
+  r.pair[b] = r.broken[2 * r.pair[b]];
+  if (b > b0) r.pair[b - 1] = r.broken[2 * r.pair[b - 1] + 1];
+}
 
 class BondClasses {
  public:
@@ -28,19 +42,28 @@ class BondClasses {
   // when it did.
   bool update(const Bonds& B);
   void forget() { built_ = false; }
-  BondRows rows() { return {index_.data(), rows_.data(), broken_.data()}; }
+  BondRows rows() { return {pair_.data(), pairRows_.data(), pairBroken_.data()}; }
+  // Distinct (length, weight) rows, with their broken twins; pair rows.
   std::size_t count() const { return broken_.size(); }
+  std::size_t pairCount() const { return pairKeys_.size(); }
 
  private:
   // The row's number, added if new.
   std::uint32_t find(const double row[2]);
+  // The pair row of rows a and b, added if new.
+  std::uint32_t findPair(std::uint32_t a, std::uint32_t b);
 
   bool built_ = false;
   std::uint64_t version_ = 0;
-  std::vector<std::uint32_t> index_;  // per bond
+  std::vector<std::uint32_t> index_;  // per bond: its row
   std::vector<double> rows_;          // two doubles per row
   std::vector<std::uint32_t> broken_;
   std::vector<std::uint32_t> slots_;  // open addressing: row number + 1, 0 = empty
+  std::vector<std::uint32_t> pair_;   // per bond: the pair row of it and the next
+  std::vector<double> pairRows_;      // four doubles per pair row
+  std::vector<std::uint32_t> pairBroken_;
+  std::vector<std::uint64_t> pairKeys_;   // the two rows of each pair row
+  std::vector<std::uint32_t> pairSlots_;  // as slots_
 };
 
 }  // namespace pdq::peri

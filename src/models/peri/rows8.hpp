@@ -54,28 +54,31 @@ struct Rows8 {
   return r;
 }
 
-// Reference length and weight of the eight bonds whose row numbers are at k.
+// Reference length and weight of the eight bonds whose pair numbers are at p (those of
+// bonds 0, 2, 4 and 6 are read).
 struct Pairs8 {
   __m512d len0, w;
 };
 
-[[gnu::target("arch=x86-64-v4")]] inline __m512d fourPairs(const double* row,
-                                                           const std::uint32_t* k, int a, int b,
-                                                           int c, int d) {
-  const __m256d lo = _mm256_loadu2_m128d(row + 2 * k[b], row + 2 * k[a]);
-  const __m256d hi = _mm256_loadu2_m128d(row + 2 * k[d], row + 2 * k[c]);
-  return _mm512_insertf64x4(_mm512_castpd256_pd512(lo), hi, 1);
+[[gnu::target("arch=x86-64-v4")]] inline Pairs8 pairs8(const BondRows& r, const std::uint32_t* p) {
+  // Rows [bonds 0 1 | 4 5] and [2 3 | 6 7]: one unpack each gives the lanes in order.
+  const __m512d lo = twoRows(r.row + 4 * p[0], r.row + 4 * p[4]);
+  const __m512d hi = twoRows(r.row + 4 * p[2], r.row + 4 * p[6]);
+  return {_mm512_unpacklo_pd(lo, hi), _mm512_unpackhi_pd(lo, hi)};
 }
 
-[[gnu::target("arch=x86-64-v4")]] inline Pairs8 pairs8(const BondRows& r, const std::uint32_t* k) {
-  // Rows (0 | 1 | 4 | 5) and (2 | 3 | 6 | 7): one unpack each gives the lanes in order.
-  const __m512d p = fourPairs(r.row, k, 0, 1, 4, 5), q = fourPairs(r.row, k, 2, 3, 6, 7);
-  return {_mm512_unpacklo_pd(p, q), _mm512_unpackhi_pd(p, q)};
+// The lanes that hold bonds 0 .. n - 1 of eight (bit L: lane L, which holds bond kLane8[L]:
+// bits 1 and 2 of each four trade places).
+inline __mmask8 lanes8(std::size_t n) {
+  const unsigned has = (1u << n) - 1;
+  return static_cast<__mmask8>((has & 0x99) | ((has & 0x22) << 1) | ((has & 0x44) >> 1));
 }
 
-// The one to seven bonds [b, b1) left after the groups of eight, as eight: the partners
-// and rows, with the particle's first bond in the lanes beyond its bonds, and the lanes
-// that hold its bonds (bit L: lane L).
+// The one to seven bonds [b, b1) left after the groups of eight. A kernel reads them in
+// place, under the mask lanes8(b1 - b), where eight bonds remain in the arrays (the lanes
+// beyond hold the next particle's: valid partners and pair rows, their results masked);
+// else as eight from here: the partners and pair numbers, with the particle's first bond
+// in the lanes beyond its bonds, and the lanes that hold its bonds.
 struct Tail8 {
   std::int32_t j[8];
   std::uint32_t k[8];
@@ -83,31 +86,30 @@ struct Tail8 {
 };
 
 [[gnu::target("arch=x86-64-v4")]] inline Tail8 tail8(const std::int32_t* partner,
-                                                     const std::uint32_t* index, std::size_t b,
+                                                     const std::uint32_t* pair, std::size_t b,
                                                      std::size_t b1) {
-  // Bonds 0 .. n - 1 of the eight are the particle's: bit o of `has` is bond o.
-  const auto has = static_cast<__mmask8>((1u << (b1 - b)) - 1);
+  const auto has = static_cast<__mmask8>((1u << (b1 - b)) - 1);  // bit o: bond o
   Tail8 t;
   _mm256_storeu_si256(reinterpret_cast<__m256i*>(t.j),
                       _mm256_mask_loadu_epi32(_mm256_set1_epi32(partner[b]), has, partner + b));
   _mm256_storeu_si256(
       reinterpret_cast<__m256i*>(t.k),
-      _mm256_mask_loadu_epi32(_mm256_set1_epi32(static_cast<int>(index[b])), has, index + b));
-  // Lane L holds bond kLane8[L]: bits 1 and 2 of each four trade places.
-  t.in = static_cast<__mmask8>((has & 0x99) | ((has & 0x22) << 1) | ((has & 0x44) >> 1));
+      _mm256_mask_loadu_epi32(_mm256_set1_epi32(static_cast<int>(pair[b])), has, pair + b));
+  t.in = lanes8(b1 - b);
   return t;
 }
 
 // Breaks the bonds of the lanes `over` holds, of bonds b .. b + 7 (attributes `stride`
-// doubles a bond, the weight second): weight 0, killed, and moved to the broken row.
-inline void break8(__mmask8 over, std::size_t b, double* attr, int stride, Bonds* bonds,
-                   const BondRows& rows) {
+// doubles a bond, the weight second) of the particle whose bonds start at b0: weight 0,
+// killed, and its pair rows to the broken ones.
+inline void break8(__mmask8 over, std::size_t b0, std::size_t b, double* attr, int stride,
+                   Bonds* bonds, const BondRows& rows) {
   for (int L = 0; L < 8; ++L)
     if (over & (1 << L)) {
       const std::size_t bk = b + kLane8[L];
       attr[stride * bk + 1] = 0;
       bonds->kill(bk);
-      rows.index[bk] = rows.broken[rows.index[bk]];
+      breakRows(rows, b0, bk);
     }
 }
 
@@ -116,11 +118,11 @@ inline void break8(__mmask8 over, std::size_t b, double* attr, int stride, Bonds
   return _mm512_setr_pd(a[j[0]], a[j[2]], a[j[1]], a[j[3]], a[j[4]], a[j[6]], a[j[5]], a[j[7]]);
 }
 
-// The four lane sums (lane L holds bonds kLane8[L] mod 4) added as (0 + 1) + (2 + 3).
+// The four lane sums (lane L holds bonds kLane8[L] mod 4) added as (0 + 1) + (2 + 3), in
+// registers.
 [[gnu::target("arch=x86-64-v4")]] inline double finish8(__m256d sum) {
-  alignas(32) double s[4];
-  _mm256_store_pd(s, sum);
-  return (s[0] + s[2]) + (s[1] + s[3]);
+  const __m128d t = _mm_add_pd(_mm256_castpd256_pd128(sum), _mm256_extractf128_pd(sum, 1));
+  return _mm_cvtsd_f64(_mm_add_sd(t, _mm_unpackhi_pd(t, t)));
 }
 
 // Adds the low half of v to the four lane sums, then the high half, in the lanes `in`

@@ -7,12 +7,13 @@
 namespace pdq::peri {
 namespace {
 
-// Bonds b .. b + 7 (j: their partners, k: their rows) into the lane sums; only the lanes
-// `in` holds are bonds of the particle.
+// Bonds b .. b + 7 (j: their partners, k: their pair numbers) of the particle whose bonds
+// start at b0 into the lane sums; only the lanes `in` holds are bonds of the particle.
 [[gnu::target("arch=x86-64-v4")]] inline void eight(const PmbView& v, const double* xi,
-                                                    std::size_t b, const std::int32_t* j,
-                                                    const std::uint32_t* k, __mmask8 in,
-                                                    __m256d& ax, __m256d& ay, __m256d& az) {
+                                                    std::size_t b0, std::size_t b,
+                                                    const std::int32_t* j, const std::uint32_t* k,
+                                                    __mmask8 in, __m256d& ax, __m256d& ay,
+                                                    __m256d& az) {
   const Rows8 r = rows8(v.x, v.nA, j, xi);
   auto [len0, w] = pairs8(v.rows, k);
   const __m512d ext = _mm512_sub_pd(r.len, len0);
@@ -20,7 +21,7 @@ namespace {
     const __mmask8 over = _mm512_mask_cmp_pd_mask(
         in, ext, _mm512_mul_pd(_mm512_set1_pd(v.criticalStretch), len0), _CMP_GT_OQ);
     if (over) {
-      break8(over, b, v.attr, 2, v.bonds, v.rows);
+      break8(over, b0, b, v.attr, 2, v.bonds, v.rows);
       w = _mm512_maskz_mov_pd(static_cast<__mmask8>(~over), w);
     }
   }
@@ -38,10 +39,14 @@ namespace {
   const double* xi = v.x + i * v.nA;
   __m256d ax = _mm256_setzero_pd(), ay = _mm256_setzero_pd(), az = _mm256_setzero_pd();
   std::size_t b = b0;
-  for (; b + 8 <= b1; b += 8) eight(v, xi, b, v.partner + b, v.rows.index + b, 0xff, ax, ay, az);
+  for (; b + 8 <= b1; b += 8) eight(v, xi, b0, b, v.partner + b, v.rows.pair + b, 0xff, ax, ay, az);
   if (b < b1) {
-    const Tail8 t = tail8(v.partner, v.rows.index, b, b1);
-    eight(v, xi, b, t.j, t.k, t.in, ax, ay, az);
+    if (b + 8 <= v.bonds->count()) {
+      eight(v, xi, b0, b, v.partner + b, v.rows.pair + b, lanes8(b1 - b), ax, ay, az);
+    } else {
+      const Tail8 t = tail8(v.partner, v.rows.pair, b, b1);
+      eight(v, xi, b0, b, t.j, t.k, t.in, ax, ay, az);
+    }
   }
   acc[0] = finish8(ax);
   acc[1] = finish8(ay);

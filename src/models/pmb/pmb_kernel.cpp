@@ -11,14 +11,15 @@ namespace {
 // The bond (of four) that each vector lane holds in the AVX2 kernel.
 constexpr int kLaneBond[4] = {0, 2, 1, 3};
 
-// One bond into lane sums s[3]: returns nothing, breaks the bond when overstretched. Its
-// length and weight come from its attributes (the portable kernel) or its row (the AVX2
-// kernel's tail, which would otherwise fetch the attributes it no longer streams).
+// Bond b of the particle whose bonds start at b0 into lane sums s[3]: breaks the bond when
+// overstretched. Its length and weight come from its attributes (the portable kernel) or
+// its row (the AVX2 kernel's tail, which would otherwise fetch the attributes it no longer
+// streams).
 template <bool kRows>
-inline void bond(const PmbView& v, const double* xi, std::size_t b, double* sx, double* sy,
-                 double* sz) {
+inline void bond(const PmbView& v, const double* xi, std::size_t b0, std::size_t b, double* sx,
+                 double* sy, double* sz) {
   const double* xj = v.x + v.partner[b] * v.nA;
-  const double* ab = kRows ? v.rows.row + 2 * v.rows.index[b] : v.attr + 2 * b;
+  const double* ab = kRows ? rowOf(v.rows, b) : v.attr + 2 * b;
   const double len0 = ab[0];
   double w = ab[1];
   const double r0 = xj[0] - xi[0], r1 = xj[1] - xi[1], r2 = xj[2] - xi[2];
@@ -29,7 +30,7 @@ inline void bond(const PmbView& v, const double* xi, std::size_t b, double* sx, 
     w = 0;
     v.attr[2 * b + 1] = 0;
     v.bonds->kill(b);
-    if (kRows) v.rows.index[b] = v.rows.broken[v.rows.index[b]];
+    if (kRows) breakRows(v.rows, b0, b);
   }
   const double t = w * ext / len;
   *sx += t * r0;
@@ -63,10 +64,9 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
     const __m256d dx = _mm256_sub_pd(_mm256_permute2f128_pd(t0, t2, 0x20), xi0);
     const __m256d dy = _mm256_sub_pd(_mm256_permute2f128_pd(t1, t3, 0x20), xi1);
     const __m256d dz = _mm256_sub_pd(_mm256_permute2f128_pd(t0, t2, 0x31), xi2);
-    // Bond attributes (length, weight) of the four bonds, de-interleaved.
-    const std::uint32_t* k = v.rows.index + b;
-    const __m256d a01 = _mm256_loadu2_m128d(v.rows.row + 2 * k[1], v.rows.row + 2 * k[0]);
-    const __m256d a23 = _mm256_loadu2_m128d(v.rows.row + 2 * k[3], v.rows.row + 2 * k[2]);
+    // Length and weight of the four bonds, from the pair rows of bonds 0, 1 and 2, 3.
+    const __m256d a01 = _mm256_loadu_pd(rowOf(v.rows, b)),
+                  a23 = _mm256_loadu_pd(rowOf(v.rows, b + 2));
     const __m256d len0 = _mm256_unpacklo_pd(a01, a23);
     __m256d w = _mm256_unpackhi_pd(a01, a23);
     const __m256d len = _mm256_sqrt_pd(_mm256_add_pd(
@@ -80,7 +80,7 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
             const std::size_t bk = b + kLaneBond[k];
             v.attr[2 * bk + 1] = 0;
             v.bonds->kill(bk);
-            v.rows.index[bk] = v.rows.broken[v.rows.index[bk]];
+            breakRows(v.rows, b0, bk);
           }
         w = _mm256_andnot_pd(over, w);
       }
@@ -100,7 +100,7 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
     ly[kLaneBond[k]] = sy[k];
     lz[kLaneBond[k]] = sz[k];
   }
-  for (int k = 0; b < b1; ++b, ++k) bond<true>(v, xi, b, &lx[k], &ly[k], &lz[k]);
+  for (int k = 0; b < b1; ++b, ++k) bond<true>(v, xi, b0, b, &lx[k], &ly[k], &lz[k]);
   finish(lx, ly, lz, acc);
 }
 
@@ -112,8 +112,8 @@ void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::siz
   double lx[4] = {0, 0, 0, 0}, ly[4] = {0, 0, 0, 0}, lz[4] = {0, 0, 0, 0};
   std::size_t b = b0;
   for (; b + 4 <= b1; b += 4)
-    for (int k = 0; k < 4; ++k) bond<false>(v, xi, b + k, &lx[k], &ly[k], &lz[k]);
-  for (int k = 0; b < b1; ++b, ++k) bond<false>(v, xi, b, &lx[k], &ly[k], &lz[k]);
+    for (int k = 0; k < 4; ++k) bond<false>(v, xi, b0, b + k, &lx[k], &ly[k], &lz[k]);
+  for (int k = 0; b < b1; ++b, ++k) bond<false>(v, xi, b0, b, &lx[k], &ly[k], &lz[k]);
   finish(lx, ly, lz, acc);
 }
 
