@@ -6,60 +6,65 @@
 namespace pdq::peri {
 namespace {
 
-std::size_t hashOf(const double row[2]) {
-  const std::uint64_t h = (std::bit_cast<std::uint64_t>(row[0]) * 0x9E3779B97F4A7C15ull) ^
-                          (std::bit_cast<std::uint64_t>(row[1]) * 0xC2B2AE3D27D4EB4Full);
+std::size_t mix(std::uint64_t a, std::uint64_t b) {
+  const std::uint64_t h = (a * 0x9E3779B97F4A7C15ull) ^ (b * 0xC2B2AE3D27D4EB4Full);
   return static_cast<std::size_t>(h ^ (h >> 32));
+}
+
+std::size_t hashOf(const double row[2]) {
+  return mix(std::bit_cast<std::uint64_t>(row[0]), std::bit_cast<std::uint64_t>(row[1]));
+}
+
+std::size_t hashOf(std::uint64_t key) { return mix(key, key >> 32); }
+
+// Open addressing over `slots` (entry number + 1, 0 = empty), kept at most half full: the
+// number of the entry `same` recognises, else of the one `add` appends after the n there
+// are; hashAt(k) is entry k's hash, to spread them again when the slots grow.
+template <class Same, class Add, class HashAt>
+std::uint32_t intern(std::vector<std::uint32_t>& slots, std::size_t hash, std::size_t n, Same same,
+                     Add add, HashAt hashAt) {
+  std::size_t mask = slots.size() - 1, s = hash & mask;
+  for (; slots[s] != 0; s = (s + 1) & mask)
+    if (same(slots[s] - 1)) return slots[s] - 1;
+  const auto c = static_cast<std::uint32_t>(n);
+  add();
+  slots[s] = c + 1;
+  if (2 * (n + 1) > slots.size()) {
+    slots.assign(2 * slots.size(), 0);
+    mask = slots.size() - 1;
+    for (std::uint32_t k = 0; k <= c; ++k) {
+      std::size_t t = hashAt(k) & mask;
+      while (slots[t]) t = (t + 1) & mask;
+      slots[t] = k + 1;
+    }
+  }
+  return c;
 }
 
 }  // namespace
 
 std::uint32_t BondClasses::find(const double row[2]) {
-  const std::size_t mask = slots_.size() - 1;
-  std::size_t s = hashOf(row) & mask;
-  for (; slots_[s] != 0; s = (s + 1) & mask)
-    if (std::memcmp(&rows_[2 * (slots_[s] - 1)], row, 2 * sizeof(double)) == 0)
-      return slots_[s] - 1;
-  // A new row; the table is kept at most half full.
-  const auto c = static_cast<std::uint32_t>(broken_.size());
-  rows_.insert(rows_.end(), row, row + 2);
-  broken_.push_back(c);  // set once every row is known
-  slots_[s] = c + 1;
-  if (2 * broken_.size() > slots_.size()) {
-    slots_.assign(2 * slots_.size(), 0);
-    for (std::uint32_t k = 0; k < broken_.size(); ++k) {
-      std::size_t t = hashOf(&rows_[2 * k]) & (slots_.size() - 1);
-      while (slots_[t]) t = (t + 1) & (slots_.size() - 1);
-      slots_[t] = k + 1;
-    }
-  }
-  return c;
+  return intern(
+      slots_, hashOf(row), broken_.size(),
+      [&](std::uint32_t k) { return std::memcmp(&rows_[2 * k], row, 2 * sizeof(double)) == 0; },
+      [&] {
+        rows_.insert(rows_.end(), row, row + 2);
+        broken_.push_back(0);  // set once every row is known
+      },
+      [&](std::uint32_t k) { return hashOf(&rows_[2 * k]); });
 }
 
 std::uint32_t BondClasses::findPair(std::uint32_t a, std::uint32_t b) {
   const std::uint64_t key = (std::uint64_t{a} << 32) | b;
-  auto hashKey = [](std::uint64_t k) {
-    const std::uint64_t h = k * 0x9E3779B97F4A7C15ull;
-    return static_cast<std::size_t>(h ^ (h >> 29));
-  };
-  std::size_t mask = pairSlots_.size() - 1, s = hashKey(key) & mask;
-  for (; pairSlots_[s] != 0; s = (s + 1) & mask)
-    if (pairKeys_[pairSlots_[s] - 1] == key) return pairSlots_[s] - 1;
-  const auto c = static_cast<std::uint32_t>(pairKeys_.size());
-  pairKeys_.push_back(key);
-  pairRows_.insert(pairRows_.end(),
-                   {rows_[2 * a], rows_[2 * a + 1], rows_[2 * b], rows_[2 * b + 1]});
-  pairSlots_[s] = c + 1;
-  if (2 * pairKeys_.size() > pairSlots_.size()) {
-    pairSlots_.assign(2 * pairSlots_.size(), 0);
-    mask = pairSlots_.size() - 1;
-    for (std::uint32_t k = 0; k < pairKeys_.size(); ++k) {
-      std::size_t t = hashKey(pairKeys_[k]) & mask;
-      while (pairSlots_[t]) t = (t + 1) & mask;
-      pairSlots_[t] = k + 1;
-    }
-  }
-  return c;
+  return intern(
+      pairSlots_, hashOf(key), pairKeys_.size(),
+      [&](std::uint32_t k) { return pairKeys_[k] == key; },
+      [&] {
+        pairKeys_.push_back(key);
+        pairRows_.insert(pairRows_.end(),
+                         {rows_[2 * a], rows_[2 * a + 1], rows_[2 * b], rows_[2 * b + 1]});
+      },
+      [&](std::uint32_t k) { return hashOf(pairKeys_[k]); });
 }
 
 bool BondClasses::update(const Bonds& B) {
