@@ -72,20 +72,20 @@ bool BondClasses::update(const Bonds& B) {
   rows_.clear();
   broken_.clear();
   slots_.assign(1024, 0);
-  index_.resize(B.count());
-  for (std::size_t b = 0; b < B.count(); ++b) index_[b] = find(B.attr(b));
+  const std::size_t n = B.count();
+  std::vector<std::uint32_t> row(n);  // each bond's
+  for (std::size_t b = 0; b < n; ++b) row[b] = find(B.attr(b));
   // Every row's broken twin is a row too (new twins are their own).
   for (std::uint32_t c = 0; c < broken_.size(); ++c) {
     const double twin[2] = {rows_[2 * c], 0.0};
     broken_[c] = find(twin);
   }
   // Each bond with the next (the last bond's own row stands in for the one it lacks).
-  const std::size_t n = B.count();
   pairKeys_.clear();
   pairRows_.clear();
   pairSlots_.assign(1024, 0);
   pair_.resize(n);
-  for (std::size_t b = 0; b < n; ++b) pair_[b] = findPair(index_[b], index_[b + 1 < n ? b + 1 : b]);
+  for (std::size_t b = 0; b < n; ++b) pair_[b] = findPair(row[b], row[b + 1 < n ? b + 1 : b]);
   // Every pair row's with either bond broken, theirs in turn (the list grows as it goes).
   pairBroken_.clear();
   for (std::size_t p = 0; p < pairKeys_.size(); ++p) {

@@ -1,6 +1,6 @@
 #pragma once
 // The bonds' (reference length, weight) rows, two consecutive bonds' to a row. The bonds of a
-// regular lattice hold a few hundred distinct (length, weight) and a few thousand distinct
+// regular lattice hold a few hundred distinct (length, weight) and some ten thousand distinct
 // pairs of them, so a kernel that reads a 4-byte row number per bond streams a fraction of
 // the bytes of the attributes themselves, reads the very same doubles, and gets two bonds'
 // in one 32-byte load. The bonds' own attributes stay the record (restart files, energies,
@@ -55,8 +55,7 @@ class BondClasses {
 
   bool built_ = false;
   std::uint64_t version_ = 0;
-  std::vector<std::uint32_t> index_;  // per bond: its row
-  std::vector<double> rows_;          // two doubles per row
+  std::vector<double> rows_;  // two doubles per row
   std::vector<std::uint32_t> broken_;
   std::vector<std::uint32_t> slots_;  // open addressing: row number + 1, 0 = empty
   std::vector<std::uint32_t> pair_;   // per bond: the pair row of it and the next
