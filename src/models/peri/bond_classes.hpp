@@ -1,7 +1,7 @@
 #pragma once
 // The bonds' (reference length, weight) rows, two consecutive bonds' to a row. The bonds of a
 // regular lattice hold a few hundred distinct (length, weight) and some ten thousand distinct
-// pairs of them, so a kernel that reads a 4-byte row number per bond streams a fraction of
+// pairs of them, so a kernel that reads a 4-byte pair number per bond streams a fraction of
 // the bytes of the attributes themselves, reads the very same doubles, and gets two bonds'
 // in one 32-byte load. The bonds' own attributes stay the record (restart files, energies,
 // damage); the rows are rebuilt from them whenever the bonds change (Bonds::version) or the
@@ -43,9 +43,8 @@ class BondClasses {
   bool update(const Bonds& B);
   void forget() { built_ = false; }
   BondRows rows() { return {pair_.data(), pairRows_.data(), pairBroken_.data()}; }
-  // Distinct (length, weight) rows, with their broken twins; pair rows.
+  // Distinct (length, weight) rows, with their broken twins.
   std::size_t count() const { return broken_.size(); }
-  std::size_t pairCount() const { return pairKeys_.size(); }
 
  private:
   // The row's number, added if new.
