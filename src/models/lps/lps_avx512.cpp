@@ -55,12 +55,9 @@ struct Particle {
   std::size_t b = b0;
   for (; b + 8 <= b1; b += 8) s = dilatation8(v, xi, v.partner + b, v.rows.pair + b, 0xff, s);
   if (b < b1) {
-    if (b + 8 <= v.bonds->count()) {
-      s = dilatation8(v, xi, v.partner + b, v.rows.pair + b, lanes8(b1 - b), s);
-    } else {
-      const Tail8 t = tail8(v.partner, v.rows.pair, b, b1);
-      s = dilatation8(v, xi, t.j, t.k, t.in, s);
-    }
+    Copy8 copy;
+    const Last8 t = last8(v.partner, v.rows.pair, b, b1, v.bonds->count(), copy);
+    s = dilatation8(v, xi, t.j, t.k, t.in, s);
   }
   return finish8(s);
 }
@@ -76,12 +73,9 @@ struct Particle {
   for (; b + 8 <= b1; b += 8)
     force8(v, xi, c, b0, b, v.partner + b, v.rows.pair + b, 0xff, ax, ay, az);
   if (b < b1) {
-    if (b + 8 <= v.bonds->count()) {
-      force8(v, xi, c, b0, b, v.partner + b, v.rows.pair + b, lanes8(b1 - b), ax, ay, az);
-    } else {
-      const Tail8 t = tail8(v.partner, v.rows.pair, b, b1);
-      force8(v, xi, c, b0, b, t.j, t.k, t.in, ax, ay, az);
-    }
+    Copy8 copy;
+    const Last8 t = last8(v.partner, v.rows.pair, b, b1, v.bonds->count(), copy);
+    force8(v, xi, c, b0, b, t.j, t.k, t.in, ax, ay, az);
   }
   acc[0] = finish8(ax);
   acc[1] = finish8(ay);

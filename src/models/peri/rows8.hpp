@@ -74,29 +74,34 @@ inline __mmask8 lanes8(std::size_t n) {
   return static_cast<__mmask8>((has & 0x99) | ((has & 0x22) << 1) | ((has & 0x44) >> 1));
 }
 
-// The one to seven bonds [b, b1) left after the groups of eight. A kernel reads them in
-// place, under the mask lanes8(b1 - b), where eight bonds remain in the arrays (the lanes
-// beyond hold the next particle's: valid partners and pair rows, their results masked);
-// else as eight from here: the partners and pair numbers, with the particle's first bond
-// in the lanes beyond its bonds, and the lanes that hold its bonds.
-struct Tail8 {
+// The one to seven bonds [b, b1) left after the groups of eight: their partners and pair
+// numbers (j, k, eight of each) and the lanes that hold them. Read in place where eight
+// bonds remain in the arrays (`count` bonds in all): the lanes beyond hold the next
+// particle's, valid numbers whose results are masked. Else copied into `copy`, with the
+// particle's first bond in the lanes beyond its bonds.
+struct Last8 {
+  const std::int32_t* j;
+  const std::uint32_t* k;
+  __mmask8 in;
+};
+struct Copy8 {
   std::int32_t j[8];
   std::uint32_t k[8];
-  __mmask8 in = 0;
 };
 
-[[gnu::target("arch=x86-64-v4")]] inline Tail8 tail8(const std::int32_t* partner,
+[[gnu::target("arch=x86-64-v4")]] inline Last8 last8(const std::int32_t* partner,
                                                      const std::uint32_t* pair, std::size_t b,
-                                                     std::size_t b1) {
+                                                     std::size_t b1, std::size_t count,
+                                                     Copy8& copy) {
+  const __mmask8 in = lanes8(b1 - b);
+  if (b + 8 <= count) return {partner + b, pair + b, in};
   const auto has = static_cast<__mmask8>((1u << (b1 - b)) - 1);  // bit o: bond o
-  Tail8 t;
-  _mm256_storeu_si256(reinterpret_cast<__m256i*>(t.j),
+  _mm256_storeu_si256(reinterpret_cast<__m256i*>(copy.j),
                       _mm256_mask_loadu_epi32(_mm256_set1_epi32(partner[b]), has, partner + b));
   _mm256_storeu_si256(
-      reinterpret_cast<__m256i*>(t.k),
+      reinterpret_cast<__m256i*>(copy.k),
       _mm256_mask_loadu_epi32(_mm256_set1_epi32(static_cast<int>(pair[b])), has, pair + b));
-  t.in = lanes8(b1 - b);
-  return t;
+  return {copy.j, copy.k, in};
 }
 
 // Breaks the bonds of the lanes `over` holds, of bonds b .. b + 7 (attributes `stride`

@@ -41,12 +41,9 @@ namespace {
   std::size_t b = b0;
   for (; b + 8 <= b1; b += 8) eight(v, xi, b0, b, v.partner + b, v.rows.pair + b, 0xff, ax, ay, az);
   if (b < b1) {
-    if (b + 8 <= v.bonds->count()) {
-      eight(v, xi, b0, b, v.partner + b, v.rows.pair + b, lanes8(b1 - b), ax, ay, az);
-    } else {
-      const Tail8 t = tail8(v.partner, v.rows.pair, b, b1);
-      eight(v, xi, b0, b, t.j, t.k, t.in, ax, ay, az);
-    }
+    Copy8 copy;
+    const Last8 t = last8(v.partner, v.rows.pair, b, b1, v.bonds->count(), copy);
+    eight(v, xi, b0, b, t.j, t.k, t.in, ax, ay, az);
   }
   acc[0] = finish8(ax);
   acc[1] = finish8(ay);
