@@ -226,13 +226,13 @@ TEST(PdKernel, BondRowsFollowTheBonds) {
     EXPECT_EQ(own[0], bonds.attr(b)[0]);
     EXPECT_EQ(own[2], next[0]) << "the next bond's row (the last bond's own)";
     for (int s = 0; s < 2; ++s) {
-      const std::uint32_t twin = r.broken[2 * r.pair[b] + s];
-      const double* t = r.row + 4 * twin;
+      const std::uint32_t twin = r.broken[r.pair[b] / 2 + s];
+      const double* t = r.row + twin;
       EXPECT_EQ(t[0], own[0]);
       EXPECT_EQ(t[2], own[2]);
       EXPECT_EQ(t[1], s == 0 ? 0.0 : own[1]);
       EXPECT_EQ(t[3], s == 1 ? 0.0 : own[3]);
-      EXPECT_EQ(r.broken[2 * twin + s], twin) << "a twin is its own";
+      EXPECT_EQ(r.broken[twin / 2 + s], twin) << "a twin is its own";
     }
   }
 }

@@ -7,7 +7,7 @@
 namespace pdq::peri {
 namespace {
 
-// Bonds b .. b + 7 (j: their partners, k: their pair numbers) into the dilatation's lane sums.
+// Bonds b .. b + 7 (j: their partners, k: their pair offsets) into the dilatation's lane sums.
 [[gnu::target("arch=x86-64-v4")]] inline __m256d dilatation8(const LpsView& v, const double* xi,
                                                              const std::int32_t* j,
                                                              const std::uint32_t* k, __mmask8 in,

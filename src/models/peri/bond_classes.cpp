@@ -85,15 +85,15 @@ bool BondClasses::update(const Bonds& B) {
   pairRows_.clear();
   pairSlots_.assign(1024, 0);
   pair_.resize(n);
-  for (std::size_t b = 0; b < n; ++b) pair_[b] = findPair(row[b], row[b + 1 < n ? b + 1 : b]);
+  for (std::size_t b = 0; b < n; ++b) pair_[b] = 4 * findPair(row[b], row[b + 1 < n ? b + 1 : b]);
   // Every pair row's with either bond broken, theirs in turn (the list grows as it goes).
   pairBroken_.clear();
   for (std::size_t p = 0; p < pairKeys_.size(); ++p) {
     const auto a = static_cast<std::uint32_t>(pairKeys_[p] >> 32);
     const auto b = static_cast<std::uint32_t>(pairKeys_[p]);
     const std::uint32_t first = findPair(broken_[a], b), second = findPair(a, broken_[b]);
-    pairBroken_.push_back(first);
-    pairBroken_.push_back(second);
+    pairBroken_.push_back(4 * first);
+    pairBroken_.push_back(4 * second);
   }
   built_ = true;
   version_ = B.version();

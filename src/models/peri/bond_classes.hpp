@@ -1,7 +1,7 @@
 #pragma once
 // The bonds' (reference length, weight) rows, two consecutive bonds' to a row. The bonds of a
 // regular lattice hold a few hundred distinct (length, weight) and some ten thousand distinct
-// pairs of them, so a kernel that reads a 4-byte pair number per bond streams a fraction of
+// pairs of them, so a kernel that reads a 4-byte pair offset per bond streams a fraction of
 // the bytes of the attributes themselves, reads the very same doubles, and gets two bonds'
 // in one 32-byte load. The bonds' own attributes stay the record (restart files, energies,
 // damage); the rows are rebuilt from them whenever the bonds change (Bonds::version) or the
@@ -14,13 +14,14 @@
 
 namespace pdq::peri {
 
-// What a kernel reads: bonds b and b + 1 side by side. pair[b] is the number of their pair
-// row, row[4 pair[b] ..] its four doubles (length and weight of bond b, then of b + 1), and
-// broken[2 p + s] the pair row p with its bond s (0: the first) broken, weight 0. A vector
+// What a kernel reads: bonds b and b + 1 side by side. pair[b] is where their pair row starts,
+// row[pair[b] ..] its four doubles (length and weight of bond b, then of b + 1): an offset,
+// not a row number, spares a kernel a multiplication per load. broken[p / 2 + s] is where the
+// pair row at p starts with its bond s (0: the first) broken, weight 0. A vector
 // kernel takes the rows of bonds b, b + 2, ... for its lanes; a bond's own length and weight
 // are the first half of its pair row (rowOf). The last bond of a particle shares its row with
 // the next particle's first, whose half is read only in lanes a kernel masks: so a kernel
-// that breaks a bond updates only pair numbers of its own particle (breakRows), and no thread
+// that breaks a bond updates only pair offsets of its own particle (breakRows), and no thread
 // writes another's.
 struct BondRows {
   std::uint32_t* pair = nullptr;
@@ -28,12 +29,12 @@ struct BondRows {
   const std::uint32_t* broken = nullptr;
 };
 
-inline const double* rowOf(const BondRows& r, std::size_t b) { return r.row + 4 * r.pair[b]; }
+inline const double* rowOf(const BondRows& r, std::size_t b) { return r.row + r.pair[b]; }
 
 // Bond b, of the particle whose bonds start at b0, has broken.
 inline void breakRows(const BondRows& r, std::size_t b0, std::size_t b) {
-  r.pair[b] = r.broken[2 * r.pair[b]];
-  if (b > b0) r.pair[b - 1] = r.broken[2 * r.pair[b - 1] + 1];
+  r.pair[b] = r.broken[r.pair[b] / 2];
+  if (b > b0) r.pair[b - 1] = r.broken[r.pair[b - 1] / 2 + 1];
 }
 
 class BondClasses {

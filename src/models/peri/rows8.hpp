@@ -54,7 +54,7 @@ struct Rows8 {
   return r;
 }
 
-// Reference length and weight of the eight bonds whose pair numbers are at p (those of
+// Reference length and weight of the eight bonds whose pair offsets are at p (those of
 // bonds 0, 2, 4 and 6 are read).
 struct Pairs8 {
   __m512d len0, w;
@@ -62,8 +62,8 @@ struct Pairs8 {
 
 [[gnu::target("arch=x86-64-v4")]] inline Pairs8 pairs8(const BondRows& r, const std::uint32_t* p) {
   // Rows [bonds 0 1 | 4 5] and [2 3 | 6 7]: one unpack each gives the lanes in order.
-  const __m512d lo = twoRows(r.row + 4 * p[0], r.row + 4 * p[4]);
-  const __m512d hi = twoRows(r.row + 4 * p[2], r.row + 4 * p[6]);
+  const __m512d lo = twoRows(r.row + p[0], r.row + p[4]);
+  const __m512d hi = twoRows(r.row + p[2], r.row + p[6]);
   return {_mm512_unpacklo_pd(lo, hi), _mm512_unpackhi_pd(lo, hi)};
 }
 

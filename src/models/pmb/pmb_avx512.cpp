@@ -7,13 +7,17 @@
 namespace pdq::peri {
 namespace {
 
-// Bonds b .. b + 7 (j: their partners, k: their pair numbers) of the particle whose bonds
-// start at b0 into the lane sums; only the lanes `in` holds are bonds of the particle.
-[[gnu::target("arch=x86-64-v4")]] inline void eight(const PmbView& v, const double* xi,
-                                                    std::size_t b0, std::size_t b,
-                                                    const std::int32_t* j, const std::uint32_t* k,
-                                                    __mmask8 in, __m256d& ax, __m256d& ay,
-                                                    __m256d& az) {
+// The forces on the particle whose bonds start at b0 from its bonds b .. b + 7 (j: their
+// partners, k: their pair offsets), before they are added; only the lanes `in` holds are
+// bonds of the particle.
+struct Force8 {
+  __m512d x, y, z;
+};
+
+[[gnu::target("arch=x86-64-v4")]] inline Force8 eight(const PmbView& v, const double* xi,
+                                                      std::size_t b0, std::size_t b,
+                                                      const std::int32_t* j, const std::uint32_t* k,
+                                                      __mmask8 in) {
   const Rows8 r = rows8(v.x, v.nA, j, xi);
   auto [len0, w] = pairs8(v.rows, k);
   const __m512d ext = _mm512_sub_pd(r.len, len0);
@@ -26,9 +30,14 @@ namespace {
     }
   }
   const __m512d t = _mm512_div_pd(_mm512_mul_pd(w, ext), r.len);
-  ax = addHalves(ax, _mm512_mul_pd(t, r.dx), in);
-  ay = addHalves(ay, _mm512_mul_pd(t, r.dy), in);
-  az = addHalves(az, _mm512_mul_pd(t, r.dz), in);
+  return {_mm512_mul_pd(t, r.dx), _mm512_mul_pd(t, r.dy), _mm512_mul_pd(t, r.dz)};
+}
+
+[[gnu::target("arch=x86-64-v4")]] inline void add8(const Force8& f, __mmask8 in, __m256d& ax,
+                                                   __m256d& ay, __m256d& az) {
+  ax = addHalves(ax, f.x, in);
+  ay = addHalves(ay, f.y, in);
+  az = addHalves(az, f.z, in);
 }
 
 }  // namespace
@@ -39,11 +48,21 @@ namespace {
   const double* xi = v.x + i * v.nA;
   __m256d ax = _mm256_setzero_pd(), ay = _mm256_setzero_pd(), az = _mm256_setzero_pd();
   std::size_t b = b0;
-  for (; b + 8 <= b1; b += 8) eight(v, xi, b0, b, v.partner + b, v.rows.pair + b, 0xff, ax, ay, az);
+  // Two groups at a time: the second's loads and square root overlap the first's division.
+  for (; b + 16 <= b1; b += 16) {
+    const Force8 f = eight(v, xi, b0, b, v.partner + b, v.rows.pair + b, 0xff);
+    const Force8 g = eight(v, xi, b0, b + 8, v.partner + b + 8, v.rows.pair + b + 8, 0xff);
+    add8(f, 0xff, ax, ay, az);
+    add8(g, 0xff, ax, ay, az);
+  }
+  if (b + 8 <= b1) {
+    add8(eight(v, xi, b0, b, v.partner + b, v.rows.pair + b, 0xff), 0xff, ax, ay, az);
+    b += 8;
+  }
   if (b < b1) {
     Copy8 copy;
     const Last8 t = last8(v.partner, v.rows.pair, b, b1, v.bonds->count(), copy);
-    eight(v, xi, b0, b, t.j, t.k, t.in, ax, ay, az);
+    add8(eight(v, xi, b0, b, t.j, t.k, t.in), t.in, ax, ay, az);
   }
   acc[0] = finish8(ax);
   acc[1] = finish8(ay);
