@@ -41,13 +41,12 @@ struct Rows8 {
   // [x0 x2 z0 z2 x1 x3 z1 z3] and [y0 y2 c0 c2 y1 y3 c1 c3], and the same for 4-7.
   const __m512d lo0 = _mm512_unpacklo_pd(r01, r23), hi0 = _mm512_unpackhi_pd(r01, r23);
   const __m512d lo1 = _mm512_unpacklo_pd(r45, r67), hi1 = _mm512_unpackhi_pd(r45, r67);
-  const __m512i first = _mm512_set_epi64(13, 12, 9, 8, 5, 4, 1, 0);
-  const __m512i second = _mm512_set_epi64(15, 14, 11, 10, 7, 6, 3, 2);
+  // Blocks of two lanes: [x0 x2 | x1 x3 | x4 x6 | x5 x7] are blocks 0 and 2 of lo0, then of lo1.
   Rows8 r;
-  r.dx = _mm512_sub_pd(_mm512_permutex2var_pd(lo0, first, lo1), _mm512_set1_pd(xi[0]));
-  r.dy = _mm512_sub_pd(_mm512_permutex2var_pd(hi0, first, hi1), _mm512_set1_pd(xi[1]));
-  r.dz = _mm512_sub_pd(_mm512_permutex2var_pd(lo0, second, lo1), _mm512_set1_pd(xi[2]));
-  r.c3 = _mm512_permutex2var_pd(hi0, second, hi1);
+  r.dx = _mm512_sub_pd(_mm512_shuffle_f64x2(lo0, lo1, 0x88), _mm512_set1_pd(xi[0]));
+  r.dy = _mm512_sub_pd(_mm512_shuffle_f64x2(hi0, hi1, 0x88), _mm512_set1_pd(xi[1]));
+  r.dz = _mm512_sub_pd(_mm512_shuffle_f64x2(lo0, lo1, 0xdd), _mm512_set1_pd(xi[2]));
+  r.c3 = _mm512_shuffle_f64x2(hi0, hi1, 0xdd);
   r.len = _mm512_sqrt_pd(
       _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(r.dx, r.dx), _mm512_mul_pd(r.dy, r.dy)),
                     _mm512_mul_pd(r.dz, r.dz)));
