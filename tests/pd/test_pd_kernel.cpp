@@ -60,7 +60,8 @@ struct Case {
         total(kBefore + nb + after),
         fast(bondsOfOne(nAttr, total)),
         portable(bondsOfOne(nAttr, total)),
-        partner(total) {
+        partner(total),
+        classes(nA) {
     std::uniform_real_distribution<double> u(-1, 1);
     const std::size_t particles = x.size() / nA;
     for (std::size_t b = 0; b < total; ++b) {
@@ -77,6 +78,7 @@ struct Case {
       if (nAttr > 2) a[2] = xj[3];
       std::copy_n(a, nAttr, portable.attr(b));
     }
+    fast.renumberPartners() = partner;  // the partners' row offsets are made from these
     classes.update(fast);
   }
 

@@ -95,6 +95,11 @@ bool BondClasses::update(const Bonds& B) {
     pairBroken_.push_back(4 * first);
     pairBroken_.push_back(4 * second);
   }
+  if (partnerRowStride_) {
+    at_.resize(n);
+    const auto stride = static_cast<std::int32_t>(partnerRowStride_);
+    for (std::size_t b = 0; b < n; ++b) at_[b] = B.partner(b) * stride;
+  }
   built_ = true;
   version_ = B.version();
   return true;

@@ -23,10 +23,15 @@ namespace pdq::peri {
 // the next particle's first, whose half is read only in lanes a kernel masks: so a kernel
 // that breaks a bond updates only pair offsets of its own particle (breakRows), and no thread
 // writes another's.
+//
+// at[b], where made (BondClasses given a row stride): where bond b's partner's position row
+// starts, its local index times the stride, so that a kernel adds it to the rows' address as
+// it is.
 struct BondRows {
   std::uint32_t* pair = nullptr;
   const double* row = nullptr;
   const std::uint32_t* broken = nullptr;
+  const std::int32_t* at = nullptr;
 };
 
 inline const double* rowOf(const BondRows& r, std::size_t b) { return r.row + r.pair[b]; }
@@ -39,11 +44,15 @@ inline void breakRows(const BondRows& r, std::size_t b0, std::size_t b) {
 
 class BondClasses {
  public:
+  // partnerRowStride: the doubles of a position row, for BondRows::at (0: none made).
+  explicit BondClasses(std::size_t partnerRowStride = 0) : partnerRowStride_(partnerRowStride) {}
   // Rebuilds the rows if the bonds changed since the last call, or after forget(); true
   // when it did.
   bool update(const Bonds& B);
   void forget() { built_ = false; }
-  BondRows rows() { return {pair_.data(), pairRows_.data(), pairBroken_.data()}; }
+  BondRows rows() {
+    return {pair_.data(), pairRows_.data(), pairBroken_.data(), at_.empty() ? nullptr : at_.data()};
+  }
   // Distinct (length, weight) rows, with their broken twins.
   std::size_t count() const { return broken_.size(); }
 
@@ -53,6 +62,7 @@ class BondClasses {
   // The pair row of rows a and b, added if new.
   std::uint32_t findPair(std::uint32_t a, std::uint32_t b);
 
+  std::size_t partnerRowStride_;
   bool built_ = false;
   std::uint64_t version_ = 0;
   std::vector<double> rows_;  // two doubles per row
@@ -63,6 +73,7 @@ class BondClasses {
   std::vector<std::uint32_t> pairBroken_;
   std::vector<std::uint64_t> pairKeys_;   // the two rows of each pair row
   std::vector<std::uint32_t> pairSlots_;  // as slots_
+  std::vector<std::int32_t> at_;
 };
 
 }  // namespace pdq::peri

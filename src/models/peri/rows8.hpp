@@ -32,6 +32,8 @@ struct Rows8 {
   return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(a)), _mm256_loadu_pd(b), 1);
 }
 
+// The rows at x + nA j[0], ..., x + nA j[7]: j the partners' indices and nA the doubles of a
+// row, or j their rows' offsets (BondRows::at) and nA 1, which spares a multiplication each.
 [[gnu::target("arch=x86-64-v4")]] inline Rows8 rows8(const double* x, std::size_t nA,
                                                      const std::int32_t* j, const double* xi) {
   const __m512d r01 = twoRows(x + j[0] * nA, x + j[1] * nA),

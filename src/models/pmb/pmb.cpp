@@ -108,7 +108,7 @@ class Pmb final : public PeriModel {
 
   bool surfaceCorrection_ = false;
   PmbKernel kernel_ = pmbKernel();
-  BondClasses classes_;  // the vector kernels' bond rows
+  BondClasses classes_{PackedPositions::kRow};  // the vector kernels' bond rows
   double c_ = 0;
 };
 

@@ -8,8 +8,8 @@ namespace pdq::peri {
 namespace {
 
 // The forces on the particle whose bonds start at b0 from its bonds b .. b + 7 (j: their
-// partners, k: their pair offsets), before they are added; only the lanes `in` holds are
-// bonds of the particle.
+// partners' row offsets, k: their pair offsets), before they are added; only the lanes `in` holds
+// are bonds of the particle.
 struct Force8 {
   __m512d x, y, z;
 };
@@ -18,7 +18,7 @@ struct Force8 {
                                                       std::size_t b0, std::size_t b,
                                                       const std::int32_t* j, const std::uint32_t* k,
                                                       __mmask8 in) {
-  const Rows8 r = rows8(v.x, v.nA, j, xi);
+  const Rows8 r = rows8(v.x, 1, j, xi);
   auto [len0, w] = pairs8(v.rows, k);
   const __m512d ext = _mm512_sub_pd(r.len, len0);
   if (v.criticalStretch > 0) {
@@ -46,22 +46,23 @@ struct Force8 {
                                                        std::size_t b0, std::size_t b1,
                                                        double acc[3]) {
   const double* xi = v.x + i * v.nA;
+  const std::int32_t* at = v.rows.at;
   __m256d ax = _mm256_setzero_pd(), ay = _mm256_setzero_pd(), az = _mm256_setzero_pd();
   std::size_t b = b0;
   // Two groups at a time: the second's loads and square root overlap the first's division.
   for (; b + 16 <= b1; b += 16) {
-    const Force8 f = eight(v, xi, b0, b, v.partner + b, v.rows.pair + b, 0xff);
-    const Force8 g = eight(v, xi, b0, b + 8, v.partner + b + 8, v.rows.pair + b + 8, 0xff);
+    const Force8 f = eight(v, xi, b0, b, at + b, v.rows.pair + b, 0xff);
+    const Force8 g = eight(v, xi, b0, b + 8, at + b + 8, v.rows.pair + b + 8, 0xff);
     add8(f, 0xff, ax, ay, az);
     add8(g, 0xff, ax, ay, az);
   }
   if (b + 8 <= b1) {
-    add8(eight(v, xi, b0, b, v.partner + b, v.rows.pair + b, 0xff), 0xff, ax, ay, az);
+    add8(eight(v, xi, b0, b, at + b, v.rows.pair + b, 0xff), 0xff, ax, ay, az);
     b += 8;
   }
   if (b < b1) {
     Copy8 copy;
-    const Last8 t = last8(v.partner, v.rows.pair, b, b1, v.bonds->count(), copy);
+    const Last8 t = last8(at, v.rows.pair, b, b1, v.bonds->count(), copy);
     add8(eight(v, xi, b0, b, t.j, t.k, t.in), t.in, ax, ay, az);
   }
   acc[0] = finish8(ax);

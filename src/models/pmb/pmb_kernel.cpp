@@ -55,10 +55,10 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
   // out of one unpack per 128-bit half); each lane still sums its own bonds in order.
   for (; b + 4 <= b1; b += 4) {
     // Rows of the four partners (x, y, z, and one more column), transposed.
-    const __m256d r0 = _mm256_loadu_pd(v.x + v.partner[b] * v.nA);
-    const __m256d r1 = _mm256_loadu_pd(v.x + v.partner[b + 1] * v.nA);
-    const __m256d r2 = _mm256_loadu_pd(v.x + v.partner[b + 2] * v.nA);
-    const __m256d r3 = _mm256_loadu_pd(v.x + v.partner[b + 3] * v.nA);
+    const __m256d r0 = _mm256_loadu_pd(v.x + v.rows.at[b]);
+    const __m256d r1 = _mm256_loadu_pd(v.x + v.rows.at[b + 1]);
+    const __m256d r2 = _mm256_loadu_pd(v.x + v.rows.at[b + 2]);
+    const __m256d r3 = _mm256_loadu_pd(v.x + v.rows.at[b + 3]);
     const __m256d t0 = _mm256_unpacklo_pd(r0, r2), t1 = _mm256_unpackhi_pd(r0, r2);
     const __m256d t2 = _mm256_unpacklo_pd(r1, r3), t3 = _mm256_unpackhi_pd(r1, r3);
     const __m256d dx = _mm256_sub_pd(_mm256_permute2f128_pd(t0, t2, 0x20), xi0);

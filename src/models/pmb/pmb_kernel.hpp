@@ -16,7 +16,8 @@ namespace pdq::peri {
 struct PmbView {
   const std::int32_t* partner;  // local index of each bond's partner
   double* attr;                 // per bond: reference length, weight (0 once broken)
-  BondRows rows;                // the same two by row (the vector kernels')
+  BondRows rows;                // the same two by row, and the partners' rows (the vector
+                                // kernels')
   const double* x;              // position rows (x, y, z first), nA doubles each
   std::size_t nA;
   double criticalStretch;  // 0: bonds never break
