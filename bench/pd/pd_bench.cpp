@@ -21,6 +21,8 @@
 //   pd_bench compare FILE_A FILE_B          largest |u_a - u_b| over the largest |u_a|
 //   pd_bench bandwidth                      one core's memory read bandwidth
 //   pd_bench divider                        one core's square-root and division throughput
+//   pd_bench incore [BONDS]                 the PMB kernel with all it reads in the cache:
+//                                           the core's own time a bond
 #include <immintrin.h>
 #include <mpi.h>
 #include <omp.h>
@@ -39,13 +41,16 @@
 #include "engine/atomic_file.hpp"
 #include "engine/comm.hpp"
 #include "engine/error.hpp"
+#include "engine/packed_positions.hpp"
 #include "engine/problem.hpp"
 #include "engine/simulation.hpp"
 #include "io/checkpoint.hpp"
 #include "io/standard_outputs.hpp"
 #include "io/thesis_input.hpp"
 #include "lammps_peer.hpp"
+#include "models/peri/bond_classes.hpp"
 #include "models/peri/peri_model.hpp"
+#include "models/pmb/pmb_kernel.hpp"
 #include "prep/cantilever.hpp"
 #include "prep/lattice.hpp"
 
@@ -440,6 +445,62 @@ int divider() {
   return 0;
 }
 
+// The PMB kernel of each vector width with everything it reads in the first-level cache:
+// 200 particles of BONDS bonds (default 100, about the 47³ block's mean), partners among the
+// next 16 rows, eight (length, weight) rows. Its time a bond is the core's own cost of a
+// bond (loads, shuffles, square root, division, sums): the block's speed if memory cost
+// nothing. CPU time, best of five.
+int incore(int argc, char** argv) {
+  const std::size_t particles = 200, near = 16, kRow = PackedPositions::kRow;
+  const std::size_t nb = argc > 2 ? std::stoul(argv[2]) : 100;
+  if (nb < 1 || nb > 1000) throw InputError("pd_bench", 0, "incore BONDS: 1 to 1000");
+  std::vector<double> x(kRow * (particles + near + 1));
+  for (std::size_t k = 0; k < x.size(); ++k)
+    x[k] = 0.01 * static_cast<double>(k / kRow) + 0.1 * static_cast<double>(k % kRow);
+  Bonds B(2);
+  for (std::size_t i = 0; i < particles; ++i)
+    for (std::size_t b = 0; b < nb; ++b) B.add(i, static_cast<Gid>(i * nb + b + 1));
+  B.finish(particles);
+  std::vector<std::int32_t> partner(B.count());
+  for (std::size_t b = 0; b < B.count(); ++b) {
+    partner[b] = static_cast<std::int32_t>(b / nb + 1 + (7 * b) % near);
+    B.attr(b)[0] = 0.05 * static_cast<double>(1 + b % 8);
+    B.attr(b)[1] = 1 + B.attr(b)[0];
+  }
+  B.renumberPartners() = partner;
+  peri::BondClasses classes(kRow);
+  classes.update(B);
+  std::vector<double> acc(3 * particles);
+  double check = 0;
+  for (peri::Simd width : {peri::Simd::portable, peri::Simd::avx2, peri::Simd::avx512}) {
+    if (width > peri::processorSimd()) continue;
+    const peri::PmbKernel kernel = peri::pmbKernel(width);
+    const peri::PmbView view{partner.data(),
+                             B.attr(0),
+                             kernel.readRows ? classes.rows() : peri::BondRows{},
+                             x.data(),
+                             kRow,
+                             0.0,
+                             &B};
+    double best = 1e9;
+    for (int rep = 0; rep < 5; ++rep) {
+      const double c0 = cpuSeconds();
+      for (int sweep = 0; sweep < 200; ++sweep)
+        for (std::size_t i = 0; i < particles; ++i)
+          kernel.force(view, i, B.begin(i), B.end(i), &acc[3 * i]);
+      best = std::min(best, (cpuSeconds() - c0) / (200.0 * particles));
+      check += acc[0];
+    }
+    const char* name[] = {"portable", "AVX2", "AVX-512"};
+    std::printf(
+        "in-core PMB kernel (1 core, CPU time, best of 5, all in cache), %s: %.3f ns a bond, "
+        "%.3g bond-steps/s, %.3g particle-steps/s at %zu bonds a particle  (check %.6g)\n",
+        name[static_cast<int>(width)], 1e9 * best / static_cast<double>(nb),
+        static_cast<double>(nb) / best, 1 / best, nb, check);
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -454,10 +515,12 @@ int main(int argc, char** argv) {
     if (what == "compare") return comm.root() ? compare(argc, argv) : 0;
     if (what == "bandwidth") return comm.root() ? bandwidth() : 0;
     if (what == "divider") return comm.root() ? divider() : 0;
+    if (what == "incore") return comm.root() ? incore(argc, argv) : 0;
     std::fprintf(
         stderr,
         "usage: pd_bench "
-        "cantilever|block|check_cost|check_steps|checkpoint_cost|compare|bandwidth|divider "
+        "cantilever|block|check_cost|check_steps|checkpoint_cost|compare|bandwidth|divider|"
+        "incore "
         "...\n");
     return 2;
   } catch (const std::exception& e) {

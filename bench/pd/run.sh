@@ -27,9 +27,11 @@ export OMP_NUM_THREADS=1
 echo "load average $(cut -d' ' -f1-3 /proc/loadavg) on $(nproc --all) cores (the machine is shared: rates are"
 echo " wall clock over the time loop; cpu rates are the busiest rank's CPU time, pdq's own work)"
 "$BENCH" bandwidth
-echo "(bytes per bond-step streamed by pdq: PMB 8 = 4 partner index + 4 pair-row number;"
-echo " LPS 16 = two passes of 4 + 4; partner positions and the rows come from cache)"
+echo "(bytes per bond-step streamed by pdq: PMB 8 = 4 partner row offset + 4 pair-row offset;"
+echo " LPS 16 = two passes of 4 partner index + 4 pair-row offset; partner positions and the"
+echo " rows come from cache)"
 "$BENCH" divider
+"$BENCH" incore
 echo
 echo "== pdq vs LAMMPS PERI: ${N}^3 simple-cubic block, delta = 3 s, 200 steps =="
 printf '%-5s %-5s %12s %12s %12s %12s %12s %7s %10s\n' model ranks pdq_ptcl/s pdq_cpu/s \
