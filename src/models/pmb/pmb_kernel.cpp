@@ -12,13 +12,13 @@ namespace {
 constexpr int kLaneBond[4] = {0, 2, 1, 3};
 
 // Bond b of the particle whose bonds start at b0 into lane sums s[3]: breaks the bond when
-// overstretched. Its length and weight come from its attributes (the portable kernel) or
-// its row (the AVX2 kernel's tail, which would otherwise fetch the attributes it no longer
-// streams).
+// overstretched. Its partner's row and its length and weight come from the partner's index
+// and its attributes (the portable kernel) or from BondRows (the AVX2 kernel's tail, which
+// would otherwise fetch, a cache miss each, the arrays it no longer streams).
 template <bool kRows>
 inline void bond(const PmbView& v, const double* xi, std::size_t b0, std::size_t b, double* sx,
                  double* sy, double* sz) {
-  const double* xj = v.x + v.partner[b] * v.nA;
+  const double* xj = kRows ? v.x + v.rows.at[b] : v.x + v.partner[b] * v.nA;
   const double* ab = kRows ? rowOf(v.rows, b) : v.attr + 2 * b;
   const double len0 = ab[0];
   double w = ab[1];
