@@ -194,6 +194,20 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
   EXPECT_GT(sharedBroken, 50u);
 }
 
+// The partners' row offsets are their local indices times the row's doubles, and follow
+// the partners when the engine renumbers them.
+TEST(PdKernel, PartnerRowOffsetsFollowThePartners) {
+  Bonds bonds = bondsOfOne(2, 5);
+  bonds.renumberPartners() = {4, 9, 2, 7, 0};
+  BondClasses classes(6);
+  classes.update(bonds);
+  for (std::size_t b = 0; b < 5; ++b) EXPECT_EQ(classes.rows().at[b], 6 * bonds.partner(b));
+  bonds.renumberPartners() = {1, 3, 5, 8, 11};
+  EXPECT_TRUE(classes.update(bonds)) << "renumbered partners are a change";
+  for (std::size_t b = 0; b < 5; ++b) EXPECT_EQ(classes.rows().at[b], 6 * bonds.partner(b));
+  EXPECT_EQ(BondClasses().rows().at, nullptr) << "made only when asked for";
+}
+
 // The rows are rebuilt when the bonds change (here: put back to a saved state) or when the
 // model rewrites their attributes (forget), and kept otherwise; each pair row holds its bond's
 // row and the next one's, and its broken twins zero the weight of one bond or the other.

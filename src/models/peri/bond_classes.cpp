@@ -2,6 +2,8 @@
 
 #include <bit>
 #include <cstring>
+#include <limits>
+#include <stdexcept>
 
 namespace pdq::peri {
 namespace {
@@ -97,8 +99,13 @@ bool BondClasses::update(const Bonds& B) {
   }
   if (partnerRowStride_) {
     at_.resize(n);
-    const auto stride = static_cast<std::int32_t>(partnerRowStride_);
-    for (std::size_t b = 0; b < n; ++b) at_[b] = B.partner(b) * stride;
+    const auto stride = static_cast<std::int64_t>(partnerRowStride_);
+    for (std::size_t b = 0; b < n; ++b) {
+      const std::int64_t at = B.partner(b) * stride;
+      if (at > std::numeric_limits<std::int32_t>::max())
+        throw std::length_error("bond rows: more local particles than 4-byte row offsets reach");
+      at_[b] = static_cast<std::int32_t>(at);
+    }
   }
   built_ = true;
   version_ = B.version();
