@@ -75,11 +75,11 @@ inline __mmask8 lanes8(std::size_t n) {
   return static_cast<__mmask8>((has & 0x99) | ((has & 0x22) << 1) | ((has & 0x44) >> 1));
 }
 
-// The one to seven bonds [b, b1) left after the groups of eight: their partners and pair
-// numbers (j, k, eight of each) and the lanes that hold them. Read in place where eight
-// bonds remain in the arrays (`count` bonds in all): the lanes beyond hold the next
-// particle's, valid numbers whose results are masked. Else copied into `copy`, with the
-// particle's first bond in the lanes beyond its bonds.
+// The one to seven bonds [b, b1) left after the groups of eight: their partners (indices or
+// row offsets, as the kernel reads them) and pair offsets (j, k, eight of each) and the lanes
+// that hold them. Read in place where eight bonds remain in the arrays (`count` bonds in
+// all): the lanes beyond hold the next particle's, valid entries whose results are masked.
+// Else copied into `copy`, with the particle's first bond in the lanes beyond its bonds.
 struct Last8 {
   const std::int32_t* j;
   const std::uint32_t* k;

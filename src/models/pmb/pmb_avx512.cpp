@@ -56,10 +56,8 @@ struct Force8 {
     add8(f, 0xff, ax, ay, az);
     add8(g, 0xff, ax, ay, az);
   }
-  if (b + 8 <= b1) {
+  for (; b + 8 <= b1; b += 8)
     add8(eight(v, xi, b0, b, at + b, v.rows.pair + b, 0xff), 0xff, ax, ay, az);
-    b += 8;
-  }
   if (b < b1) {
     Copy8 copy;
     const Last8 t = last8(at, v.rows.pair, b, b1, v.bonds->count(), copy);
