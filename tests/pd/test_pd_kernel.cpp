@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdio>
 #include <cstring>
+#include <numeric>
 #include <random>
 #include <vector>
 
@@ -17,7 +18,7 @@ namespace pdq::peri {
 namespace {
 
 // The vector widths this CPU runs (whatever PDQ_SIMD says), and the bonds of other particles
-// around the kernels' range: before it, and after it none (the arrays end with the particle's
+// around the kernels' range: before it, and after it none (the arrays end with the range's
 // bonds: the kernels copy their last bonds) or as many as a vector's tail reads in place.
 std::vector<Simd> widths() {
   std::vector<Simd> w;
@@ -28,13 +29,17 @@ std::vector<Simd> widths() {
 }
 constexpr std::size_t kBefore = 3, kAfter = 8;
 
-// Particle 0's nb bonds, all alive, for the kernels to kill the ones that break.
-Bonds bondsOfOne(int nAttr, std::size_t nb) {
+// Particle i's count[i] bonds, all alive, for the kernels to kill the ones that break.
+Bonds bondsOf(int nAttr, const std::vector<std::size_t>& count) {
   Bonds bonds(nAttr);
-  for (std::size_t b = 0; b < nb; ++b) bonds.add(0, static_cast<Gid>(b + 1));
-  bonds.finish(1);
+  Gid partner = 0;
+  for (std::size_t i = 0; i < count.size(); ++i)
+    for (std::size_t b = 0; b < count[i]; ++b) bonds.add(i, ++partner);
+  bonds.finish(count.size());
   return bonds;
 }
+
+Bonds bondsOfOne(int nAttr, std::size_t nb) { return bondsOf(nAttr, {nb}); }
 
 // The kernels killed exactly the bonds whose weight they set to 0.
 void expectKilledAsBroken(const Bonds& bonds, const std::vector<double>& attr, int stride) {
@@ -42,42 +47,46 @@ void expectKilledAsBroken(const Bonds& bonds, const std::vector<double>& attr, i
     EXPECT_EQ(bonds.alive(b), attr[stride * b + 1] != 0) << "bond " << b;
 }
 
-// One case: particle 0's nb bonds, between kBefore and `after` bonds of other particles, to
-// random partners, in two sets of bonds alike (for the fast and the portable kernel): length
-// and weight from one of the `shared` rows, as on a lattice, or each bond its own (stretched
-// or compressed); a third attribute, where there is one, is the partner's 1/m (its position
-// row's fourth column). The fast set's rows are made.
+// One case: particles 0, 1, ... with count[0], count[1], ... bonds, in two sets of bonds alike
+// (for the fast and the portable kernel), particle i at position row i and its partners at
+// random rows beyond the particles'; length and weight from one of the `shared` rows, as on a
+// lattice, or each bond its own (stretched or compressed); a third attribute, where there is
+// one, is the partner's 1/m (its position row's fourth column). The kernels take the particles
+// between the first and the last. The fast set's rows are made.
 struct Case {
-  std::size_t nb, total;
+  std::vector<std::size_t> count;
+  std::size_t total;
   Bonds fast, portable;
   std::vector<std::int32_t> partner;
   BondClasses classes;
 
   Case(std::mt19937_64& rng, const std::vector<double>& x, std::size_t nA,
-       const std::vector<std::array<double, 2>>& shared, bool fewRows, int nAttr, std::size_t nb,
-       std::size_t after)
-      : nb(nb),
-        total(kBefore + nb + after),
-        fast(bondsOfOne(nAttr, total)),
-        portable(bondsOfOne(nAttr, total)),
+       const std::vector<std::array<double, 2>>& shared, bool fewRows, int nAttr,
+       std::vector<std::size_t> count_)
+      : count(std::move(count_)),
+        total(std::accumulate(count.begin(), count.end(), std::size_t{0})),
+        fast(bondsOf(nAttr, count)),
+        portable(bondsOf(nAttr, count)),
         partner(total),
         classes(nA) {
     std::uniform_real_distribution<double> u(-1, 1);
-    const std::size_t particles = x.size() / nA;
-    for (std::size_t b = 0; b < total; ++b) {
-      partner[b] = static_cast<std::int32_t>(1 + rng() % (particles - 1));
-      const double* xj = &x[partner[b] * nA];
-      const double len = std::hypot(xj[0] - x[0], xj[1] - x[1], xj[2] - x[2]);
-      double* a = fast.attr(b);
-      if (fewRows) {
-        std::copy_n(shared[rng() % shared.size()].data(), 2, a);
-      } else {
-        a[0] = len * (1 + 0.1 * u(rng));
-        a[1] = 1 + u(rng);
+    const std::size_t rows = x.size() / nA, owners = count.size();
+    for (std::size_t i = 0; i < owners; ++i)
+      for (std::size_t b = fast.begin(i); b < fast.end(i); ++b) {
+        partner[b] = static_cast<std::int32_t>(owners + rng() % (rows - owners));
+        const double* xi = &x[i * nA];
+        const double* xj = &x[partner[b] * nA];
+        const double len = std::hypot(xj[0] - xi[0], xj[1] - xi[1], xj[2] - xi[2]);
+        double* a = fast.attr(b);
+        if (fewRows) {
+          std::copy_n(shared[rng() % shared.size()].data(), 2, a);
+        } else {
+          a[0] = len * (1 + 0.1 * u(rng));
+          a[1] = 1 + u(rng);
+        }
+        if (nAttr > 2) a[2] = xj[3];
+        std::copy_n(a, nAttr, portable.attr(b));
       }
-      if (nAttr > 2) a[2] = xj[3];
-      std::copy_n(a, nAttr, portable.attr(b));
-    }
     fast.renumberPartners() = partner;  // the partners' row offsets are made from these
     classes.update(fast);
   }
@@ -94,12 +103,14 @@ struct Case {
       EXPECT_EQ(0, std::memcmp(attr + stride * b, attrB + stride * b, stride * sizeof(double)))
           << "the same bonds break";
       EXPECT_EQ(0, std::memcmp(rowOf(r, b), attr + stride * b, 2 * sizeof(double)))
-          << "bond " << b << " of " << nb << ": its row follows it as it breaks";
-      // The pair row's second half is the next bond's, but for the one before the particle,
-      // whose second half no kernel of this particle may write.
-      if (b + 1 < total && b + 1 != kBefore) {
+          << "bond " << b << ": its row follows it as it breaks";
+      // The pair row's second half is the next bond's, but for a particle's last bond, whose
+      // second half no kernel of the next particle may write.
+      bool last = false;
+      for (std::size_t i = 1; i < count.size(); ++i) last |= b + 1 == fast.begin(i);
+      if (b + 1 < total && !last) {
         EXPECT_EQ(0, std::memcmp(rowOf(r, b) + 2, attr + stride * (b + 1), 2 * sizeof(double)))
-            << "bond " << b << " of " << nb << ": its pair row follows the next bond";
+            << "bond " << b << ": its pair row follows the next bond";
       }
       broken += attr[stride * b + 1] == 0;
     }
@@ -109,9 +120,10 @@ struct Case {
   }
 };
 
-// The fast PMB kernel reads the bonds' (length, weight) rows (BondClasses); the portable
+// The fast PMB kernels read the bonds' (length, weight) rows (BondClasses); the portable
 // one the attributes themselves. Bonds with a few shared rows, as on a lattice, and bonds
-// with rows of their own.
+// with rows of their own. The kernels take two particles (the AVX-512 one together: four
+// bonds of each a group while both have four left), or each on its own.
 TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
   std::mt19937_64 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);
@@ -122,22 +134,30 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
   std::size_t broken = 0, sharedBroken = 0;
   for (Simd width : widths())
     for (bool fewRows : {false, true})
-      for (double sc : {0.0, 0.05}) {
-        for (std::size_t nb = 0; nb < 40; ++nb)
-          for (std::size_t after : {std::size_t{0}, kAfter}) {
-            SCOPED_TRACE(static_cast<int>(width));
-            Case c(rng, x, nA, shared, fewRows, 2, nb, after);
-            double fast[3], portable[3];
-            pmbKernel(width).force(PmbView{c.partner.data(), c.fast.attr(0), c.classes.rows(),
-                                           x.data(), nA, sc, &c.fast},
-                                   0, kBefore, kBefore + nb, fast);
-            pmbKernelPortable(
-                PmbView{c.partner.data(), c.portable.attr(0), {}, x.data(), nA, sc, &c.portable}, 0,
-                kBefore, kBefore + nb, portable);
-            EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-            (fewRows ? sharedBroken : broken) += c.expectSameBonds();
-          }
-      }
+      for (double sc : {0.0, 0.05})
+        for (bool together : {true, false})
+          for (std::size_t na = 0; na < 40; ++na)
+            for (std::size_t nb : {na, (7 * na + 3) % 40, static_cast<std::size_t>(rng() % 40)})
+              for (std::size_t after : {std::size_t{0}, kAfter}) {
+                SCOPED_TRACE(static_cast<int>(width));
+                Case c(rng, x, nA, shared, fewRows, 2, {kBefore, na, nb, after});
+                double fast[3 * 4], portable[3 * 4];
+                const PmbView fastView{
+                    c.partner.data(), c.fast.attr(0), c.classes.rows(), x.data(), nA, sc, &c.fast};
+                if (together) {
+                  pmbKernel(width).force(fastView, 1, 3, fast, 3);
+                } else {
+                  pmbKernel(width).force(fastView, 1, 2, fast, 3);
+                  pmbKernel(width).force(fastView, 2, 3, fast, 3);
+                }
+                pmbKernelPortable(
+                    PmbView{
+                        c.partner.data(), c.portable.attr(0), {}, x.data(), nA, sc, &c.portable},
+                    1, 3, portable, 3);
+                EXPECT_EQ(0, std::memcmp(fast + 3, portable + 3, 6 * sizeof(double)))
+                    << na << " and " << nb << " bonds";
+                (fewRows ? sharedBroken : broken) += c.expectSameBonds();
+              }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
   EXPECT_GT(sharedBroken, 50u);
 }
@@ -162,7 +182,7 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
         for (std::size_t nb = 0; nb < 40; ++nb)
           for (std::size_t after : {std::size_t{0}, kAfter}) {
             SCOPED_TRACE(static_cast<int>(width));
-            Case c(rng, x, nA, shared, fewRows, 3, nb, after);
+            Case c(rng, x, nA, shared, fewRows, 3, {kBefore, nb, after});
             if (fewRows && nb > 0) {
               EXPECT_LE(c.classes.count(), 8u) << "four rows and their twins";
             }
@@ -179,13 +199,13 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
             const LpsView portableView{
                 c.partner.data(), c.portable.attr(0), {}, x.data(), nA, theta.data(), 1.5, -0.7, sc,
                 &c.portable};
-            const double d1 = lpsKernels(width).dilatation(fastView, 0, kBefore, kBefore + nb);
+            const double d1 = lpsKernels(width).dilatation(fastView, 1, kBefore, kBefore + nb);
             const double d2 =
-                lpsKernelsPortable().dilatation(portableView, 0, kBefore, kBefore + nb);
+                lpsKernelsPortable().dilatation(portableView, 1, kBefore, kBefore + nb);
             EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
             double fast[3], portable[3];
-            lpsKernels(width).force(fastView, 0, kBefore, kBefore + nb, 0.3, 0.8, fast);
-            lpsKernelsPortable().force(portableView, 0, kBefore, kBefore + nb, 0.3, 0.8, portable);
+            lpsKernels(width).force(fastView, 1, kBefore, kBefore + nb, 0.3, 0.8, fast);
+            lpsKernelsPortable().force(portableView, 1, kBefore, kBefore + nb, 0.3, 0.8, portable);
             EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
             (fewRows ? sharedBroken : broken) += c.expectSameBonds();
           }

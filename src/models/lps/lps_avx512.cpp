@@ -12,8 +12,8 @@ namespace {
                                                              const std::int32_t* j,
                                                              const std::uint32_t* k, __mmask8 in,
                                                              __m256d s) {
-  const Rows8 r = rows8(v.x, v.nA, j, xi);
-  const auto [len0, w] = pairs8(v.rows, k);
+  const Rows8 r = rows8(v.x, v.nA, j, j + 4, xi8(xi));
+  const auto [len0, w] = pairs8(v.rows, k, k + 4);
   return addHalves(s, _mm512_mul_pd(_mm512_mul_pd(w, len0), _mm512_sub_pd(r.len, len0)), in);
 }
 
@@ -28,8 +28,8 @@ struct Particle {
                                                      std::size_t b, const std::int32_t* j,
                                                      const std::uint32_t* k, __mmask8 in,
                                                      __m256d& ax, __m256d& ay, __m256d& az) {
-  const Rows8 r = rows8(v.x, v.nA, j, xi);
-  auto [len0, w] = pairs8(v.rows, k);
+  const Rows8 r = rows8(v.x, v.nA, j, j + 4, xi8(xi));
+  auto [len0, w] = pairs8(v.rows, k, k + 4);
   const __m512d invMj = r.c3, thj = pick8(v.theta, j);
   const __m512d ext = _mm512_sub_pd(r.len, len0);
   if (v.criticalStretch > 0) {

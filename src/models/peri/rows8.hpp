@@ -10,9 +10,10 @@
 #include <immintrin.h>
 
 // GCC 12's intrinsics leave the lanes they are told to overwrite uninitialised
-// (_mm512_undefined_pd), which its own warning then reports.
+// (_mm512_undefined_pd), which its own warnings then report.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#pragma GCC diagnostic ignored "-Wuninitialized"
 
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +24,24 @@ namespace pdq::peri {
 
 inline constexpr int kLane8[8] = {0, 2, 1, 3, 4, 6, 5, 7};
 
+// A particle's position (x, y, z) in all eight lanes, or two particles' (the first in
+// lanes 0-3, the second in 4-7).
+struct Xi8 {
+  __m512d x, y, z;
+};
+
+[[gnu::target("arch=x86-64-v4")]] inline Xi8 xi8(const double* a) {
+  return {_mm512_set1_pd(a[0]), _mm512_set1_pd(a[1]), _mm512_set1_pd(a[2])};
+}
+
+[[gnu::target("arch=x86-64-v4")]] inline __m512d both(double a, double b) {
+  return _mm512_insertf64x4(_mm512_set1_pd(a), _mm256_set1_pd(b), 1);
+}
+
+[[gnu::target("arch=x86-64-v4")]] inline Xi8 xi8(const double* a, const double* b) {
+  return {both(a[0], b[0]), both(a[1], b[1]), both(a[2], b[2])};
+}
+
 // Columns 0-3 of the eight partners' rows, less xi in 0-2; len = |(dx, dy, dz)|.
 struct Rows8 {
   __m512d dx, dy, dz, c3, len;
@@ -32,22 +51,24 @@ struct Rows8 {
   return _mm512_insertf64x4(_mm512_castpd256_pd512(_mm256_loadu_pd(a)), _mm256_loadu_pd(b), 1);
 }
 
-// The rows at x + nA j[0], ..., x + nA j[7]: j the partners' indices and nA the doubles of a
-// row, or j their rows' offsets (BondRows::at) and nA 1, which spares a multiplication each.
+// The rows at x + nA j for j = lo[0..3] (lanes 0-3) and hi[0..3] (lanes 4-7): the
+// partners' indices and nA the doubles of a row, or their rows' offsets (BondRows::at) and
+// nA 1, which spares a multiplication each. One particle's eight bonds: hi = lo + 4.
 [[gnu::target("arch=x86-64-v4")]] inline Rows8 rows8(const double* x, std::size_t nA,
-                                                     const std::int32_t* j, const double* xi) {
-  const __m512d r01 = twoRows(x + j[0] * nA, x + j[1] * nA),
-                r23 = twoRows(x + j[2] * nA, x + j[3] * nA),
-                r45 = twoRows(x + j[4] * nA, x + j[5] * nA),
-                r67 = twoRows(x + j[6] * nA, x + j[7] * nA);
+                                                     const std::int32_t* lo, const std::int32_t* hi,
+                                                     const Xi8& xi) {
+  const __m512d r01 = twoRows(x + lo[0] * nA, x + lo[1] * nA),
+                r23 = twoRows(x + lo[2] * nA, x + lo[3] * nA),
+                r45 = twoRows(x + hi[0] * nA, x + hi[1] * nA),
+                r67 = twoRows(x + hi[2] * nA, x + hi[3] * nA);
   // [x0 x2 z0 z2 x1 x3 z1 z3] and [y0 y2 c0 c2 y1 y3 c1 c3], and the same for 4-7.
   const __m512d lo0 = _mm512_unpacklo_pd(r01, r23), hi0 = _mm512_unpackhi_pd(r01, r23);
   const __m512d lo1 = _mm512_unpacklo_pd(r45, r67), hi1 = _mm512_unpackhi_pd(r45, r67);
   // Blocks of two lanes: [x0 x2 | x1 x3 | x4 x6 | x5 x7] are blocks 0 and 2 of lo0, then of lo1.
   Rows8 r;
-  r.dx = _mm512_sub_pd(_mm512_shuffle_f64x2(lo0, lo1, 0x88), _mm512_set1_pd(xi[0]));
-  r.dy = _mm512_sub_pd(_mm512_shuffle_f64x2(hi0, hi1, 0x88), _mm512_set1_pd(xi[1]));
-  r.dz = _mm512_sub_pd(_mm512_shuffle_f64x2(lo0, lo1, 0xdd), _mm512_set1_pd(xi[2]));
+  r.dx = _mm512_sub_pd(_mm512_shuffle_f64x2(lo0, lo1, 0x88), xi.x);
+  r.dy = _mm512_sub_pd(_mm512_shuffle_f64x2(hi0, hi1, 0x88), xi.y);
+  r.dz = _mm512_sub_pd(_mm512_shuffle_f64x2(lo0, lo1, 0xdd), xi.z);
   r.c3 = _mm512_shuffle_f64x2(hi0, hi1, 0xdd);
   r.len = _mm512_sqrt_pd(
       _mm512_add_pd(_mm512_add_pd(_mm512_mul_pd(r.dx, r.dx), _mm512_mul_pd(r.dy, r.dy)),
@@ -55,17 +76,18 @@ struct Rows8 {
   return r;
 }
 
-// Reference length and weight of the eight bonds whose pair offsets are at p (those of
-// bonds 0, 2, 4 and 6 are read).
+// Reference length and weight of the eight bonds whose pair offsets are lo[0..3] (lanes 0-3)
+// and hi[0..3] (lanes 4-7); those of bonds 0 and 2 of each four are read.
 struct Pairs8 {
   __m512d len0, w;
 };
 
-[[gnu::target("arch=x86-64-v4")]] inline Pairs8 pairs8(const BondRows& r, const std::uint32_t* p) {
+[[gnu::target("arch=x86-64-v4")]] inline Pairs8 pairs8(const BondRows& r, const std::uint32_t* lo,
+                                                       const std::uint32_t* hi) {
   // Rows [bonds 0 1 | 4 5] and [2 3 | 6 7]: one unpack each gives the lanes in order.
-  const __m512d lo = twoRows(r.row + p[0], r.row + p[4]);
-  const __m512d hi = twoRows(r.row + p[2], r.row + p[6]);
-  return {_mm512_unpacklo_pd(lo, hi), _mm512_unpackhi_pd(lo, hi)};
+  const __m512d a = twoRows(r.row + lo[0], r.row + hi[0]);
+  const __m512d b = twoRows(r.row + lo[2], r.row + hi[2]);
+  return {_mm512_unpacklo_pd(a, b), _mm512_unpackhi_pd(a, b)};
 }
 
 // The lanes that hold bonds 0 .. n - 1 of eight (bit L: lane L, which holds bond kLane8[L]:
@@ -136,6 +158,11 @@ inline void break8(__mmask8 over, std::size_t b0, std::size_t b, double* attr, i
 [[gnu::target("arch=x86-64-v4")]] inline __m256d addHalves(__m256d sum, __m512d v, __mmask8 in) {
   sum = _mm256_mask_add_pd(sum, in & 0xf, sum, _mm512_castpd512_pd256(v));
   return _mm256_mask_add_pd(sum, in >> 4, sum, _mm512_extractf64x4_pd(v, 1));
+}
+
+// Half h of v (0: lanes 0-3).
+[[gnu::target("arch=x86-64-v4")]] inline __m256d half(__m512d v, int h) {
+  return h ? _mm512_extractf64x4_pd(v, 1) : _mm512_castpd512_pd256(v);
 }
 
 }  // namespace pdq::peri

@@ -4,6 +4,7 @@
 // the partner's share of the acceleration per unit extension, c V_j w g / (ρ |ξ|) (w the
 // partial-volume weight, g the optional surface correction), so the kernel (pmb_kernel.hpp)
 // does one square root, one division and a few multiply-adds per bond.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -86,9 +87,10 @@ class Pmb final : public PeriModel {
                        PackedPositions::kRow,
                        criticalStretch_,
                        &B};
-    const long n = static_cast<long>(P.owned());
+    // Two particles a call: the AVX-512 kernel takes them together.
+    const long n = static_cast<long>(P.owned()), stride = P.schema().nInteg();
 #pragma omp parallel for schedule(static)
-    for (long i = 0; i < n; ++i) kernel.force(view, i, B.begin(i), B.end(i), P.integ(i));
+    for (long i = 0; i < n; i += 2) kernel.force(view, i, std::min(i + 2, n), P.integ(0), stride);
   }
 
   // Half the energy of its bonds, ½ c s² |ξ| V_i V_j w g each.

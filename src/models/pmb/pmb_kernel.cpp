@@ -44,8 +44,8 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
   acc[2] = (lz[0] + lz[1]) + (lz[2] + lz[3]);
 }
 
-[[gnu::target("avx2")]] void pmbKernelAvx2(const PmbView& v, std::size_t i, std::size_t b0,
-                                           std::size_t b1, double acc[3]) {
+[[gnu::target("avx2")]] void pmbParticleAvx2(const PmbView& v, std::size_t i, std::size_t b0,
+                                             std::size_t b1, double acc[3]) {
   const double* xi = v.x + i * v.nA;
   const __m256d xi0 = _mm256_set1_pd(xi[0]), xi1 = _mm256_set1_pd(xi[1]),
                 xi2 = _mm256_set1_pd(xi[2]), sc = _mm256_set1_pd(v.criticalStretch);
@@ -104,10 +104,14 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
   finish(lx, ly, lz, acc);
 }
 
-}  // namespace
+[[gnu::target("avx2")]] void pmbKernelAvx2(const PmbView& v, std::size_t i0, std::size_t i1,
+                                           double* acc, std::size_t stride) {
+  for (std::size_t i = i0; i < i1; ++i)
+    pmbParticleAvx2(v, i, v.bonds->begin(i), v.bonds->end(i), acc + i * stride);
+}
 
-void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
-                       double acc[3]) {
+void pmbParticlePortable(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
+                         double acc[3]) {
   const double* xi = v.x + i * v.nA;
   double lx[4] = {0, 0, 0, 0}, ly[4] = {0, 0, 0, 0}, lz[4] = {0, 0, 0, 0};
   std::size_t b = b0;
@@ -115,6 +119,14 @@ void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::siz
     for (int k = 0; k < 4; ++k) bond<false>(v, xi, b0, b + k, &lx[k], &ly[k], &lz[k]);
   for (int k = 0; b < b1; ++b, ++k) bond<false>(v, xi, b0, b, &lx[k], &ly[k], &lz[k]);
   finish(lx, ly, lz, acc);
+}
+
+}  // namespace
+
+void pmbKernelPortable(const PmbView& v, std::size_t i0, std::size_t i1, double* acc,
+                       std::size_t stride) {
+  for (std::size_t i = i0; i < i1; ++i)
+    pmbParticlePortable(v, i, v.bonds->begin(i), v.bonds->end(i), acc + i * stride);
 }
 
 PmbKernel pmbKernel(Simd width) {

@@ -1,5 +1,6 @@
 #pragma once
-// The PMB force kernel: the acceleration of one particle from its bonds. Bonds are summed
+// The PMB force kernel: the accelerations of a range of particles from their bonds (particle
+// i's are v.bonds->begin(i) .. end(i)). Each particle's bonds are summed
 // in four interleaved lanes (bond k of the particle goes to lane k mod 4) and the lanes
 // are added as (l0 + l1) + (l2 + l3), so an AVX2 version can do four bonds at once and an
 // AVX-512 one eight (two fours in turn); the portable version follows exactly the same
@@ -24,16 +25,20 @@ struct PmbView {
   Bonds* bonds;            // a bond that breaks is also killed here (the engine's flag)
 };
 
+// Particles [i0, i1); particle i's acceleration goes to acc[stride i ..].
+using PmbForce = void (*)(const PmbView& v, std::size_t i0, std::size_t i1, double* acc,
+                          std::size_t stride);
+
 struct PmbKernel {
-  void (*force)(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1, double acc[3]);
+  PmbForce force;
   bool readRows;  // it reads PmbView::rows (else only attr)
 };
 
 // The kernel of the given width, or of the processor's widest if that is narrower.
 PmbKernel pmbKernel(Simd width = widestSimd());
-void pmbKernelPortable(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
-                       double acc[3]);
-void pmbKernelAvx512(const PmbView& v, std::size_t i, std::size_t b0, std::size_t b1,
-                     double acc[3]);
+void pmbKernelPortable(const PmbView& v, std::size_t i0, std::size_t i1, double* acc,
+                       std::size_t stride);
+void pmbKernelAvx512(const PmbView& v, std::size_t i0, std::size_t i1, double* acc,
+                     std::size_t stride);
 
 }  // namespace pdq::peri
