@@ -1,10 +1,11 @@
 #pragma once
 // The PMB force kernel: the accelerations of a range of particles from their bonds (particle
-// i's are v.bonds->begin(i) .. end(i)). Each particle's bonds are summed
-// in four interleaved lanes (bond k of the particle goes to lane k mod 4) and the lanes
-// are added as (l0 + l1) + (l2 + l3), so an AVX2 version can do four bonds at once and an
-// AVX-512 one eight (two fours in turn); the portable version follows exactly the same
-// order, so all give the same bits, on any machine and for any number of ranks or threads.
+// i's are v.bonds->begin(i) .. end(i)). Each particle's bonds are summed in four interleaved
+// lanes (bond k of the particle goes to lane k mod 4) and the lanes are added as
+// (l0 + l1) + (l2 + l3), so an AVX2 version can do four bonds at once and an AVX-512 one
+// eight (two fours of one particle in turn, or four of each of two particles side by side);
+// the portable version follows exactly the same order, so all give the same bits, on any
+// machine and for any number of ranks or threads.
 #include <cstddef>
 #include <cstdint>
 
