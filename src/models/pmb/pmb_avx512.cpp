@@ -5,7 +5,7 @@
 // Particles go two at a time, four bonds of each to a group: the low half of the sums holds
 // the first particle's four lane sums and the high half the second's, so a group's forces are
 // added in one instruction where one particle's eight take two in turn, and each lane's chain
-// of additions, whose latency bounds the loop, is half as long a bond.
+// of additions is half as long a bond.
 #include <algorithm>
 
 #include "models/peri/rows8.hpp"
@@ -31,21 +31,32 @@ struct Force8 {
   __m512d x, y, z;
 };
 
+// Breaks the bonds of the lanes `over` holds: bonds a .. a + 3 of the particle whose bonds
+// start at a0 in lanes 0-3, bonds b .. b + 3 of the one whose bonds start at b0 in lanes 4-7.
+// Out of line, and given numbers rather than the groups, so that the loop keeps its
+// registers.
+[[gnu::noinline, gnu::cold]] void breakLanes(const PmbView& v, __mmask8 over, std::size_t a0,
+                                             std::size_t a, std::size_t b0, std::size_t b) {
+  break8(over & 0xf, a0, a, v.attr, 2, v.bonds, v.rows);
+  break8(over >> 4, b0, b, v.attr, 2, v.bonds, v.rows);
+}
+
 // The forces of bonds lo (lanes 0-3) and hi (lanes 4-7), before they are added; only the
 // lanes `in` holds are bonds. kBreaks: bonds can break (a critical stretch is set); the
 // kernel is made with and without the test, so that a run whose bonds never break skips it.
 template <bool kBreaks>
-[[gnu::target("arch=x86-64-v4")]] inline Force8 eight(const PmbView& v, const Xi8& xi,
-                                                      const Four& lo, const Four& hi, __mmask8 in) {
+[[gnu::target("arch=x86-64-v4"), gnu::always_inline]] inline Force8 eight(
+    const PmbView& v, const Xi8& xi, const Four& lo, const Four& hi, __mmask8 in) {
   const Rows8 r = rows8(v.x, 1, lo.j, hi.j, xi);
   auto [len0, w] = pairs8(v.rows, lo.k, hi.k);
   const __m512d ext = _mm512_sub_pd(r.len, len0);
   if (kBreaks) {
+    // Bonds of weight 0 have broken already: only the others are judged.
+    const __mmask8 live = _mm512_mask_cmp_pd_mask(in, w, _mm512_setzero_pd(), _CMP_NEQ_UQ);
     const __mmask8 over = _mm512_mask_cmp_pd_mask(
-        in, ext, _mm512_mul_pd(_mm512_set1_pd(v.criticalStretch), len0), _CMP_GT_OQ);
+        live, ext, _mm512_mul_pd(_mm512_set1_pd(v.criticalStretch), len0), _CMP_GT_OQ);
     if (over) {
-      break8(over & 0xf, lo.b0, lo.b, v.attr, 2, v.bonds, v.rows);
-      break8(over >> 4, hi.b0, hi.b, v.attr, 2, v.bonds, v.rows);
+      breakLanes(v, over, lo.b0, lo.b, hi.b0, hi.b);
       w = _mm512_maskz_mov_pd(static_cast<__mmask8>(~over), w);
     }
   }

@@ -25,8 +25,9 @@ inline void bond(const PmbView& v, const double* xi, std::size_t b0, std::size_t
   const double r0 = xj[0] - xi[0], r1 = xj[1] - xi[1], r2 = xj[2] - xi[2];
   const double len = std::sqrt(r0 * r0 + r1 * r1 + r2 * r2);
   const double ext = len - len0;
-  // Both ends judge a bond from the same numbers, so it breaks on both sides at once.
-  if (v.criticalStretch > 0 && ext > v.criticalStretch * len0) {
+  // Both ends judge a bond from the same numbers, so it breaks on both sides at once. A
+  // bond of weight 0 has broken already (and is dead): it is not judged again.
+  if (v.criticalStretch > 0 && w != 0 && ext > v.criticalStretch * len0) {
     w = 0;
     v.attr[2 * b + 1] = 0;
     v.bonds->kill(b);
@@ -73,7 +74,8 @@ inline void finish(const double* lx, const double* ly, const double* lz, double 
         _mm256_add_pd(_mm256_mul_pd(dx, dx), _mm256_mul_pd(dy, dy)), _mm256_mul_pd(dz, dz)));
     const __m256d ext = _mm256_sub_pd(len, len0);
     if (v.criticalStretch > 0) {
-      const __m256d over = _mm256_cmp_pd(ext, _mm256_mul_pd(sc, len0), _CMP_GT_OQ);
+      const __m256d over = _mm256_and_pd(_mm256_cmp_pd(ext, _mm256_mul_pd(sc, len0), _CMP_GT_OQ),
+                                         _mm256_cmp_pd(w, _mm256_setzero_pd(), _CMP_NEQ_UQ));
       if (const int m = _mm256_movemask_pd(over)) {
         for (int k = 0; k < 4; ++k)
           if (m & (1 << k)) {
