@@ -204,15 +204,20 @@ TEST(PdKernel, LpsFastKernelsMatchPortableBitwise) {
             const LpsView portableView{
                 c.partner.data(), c.portable.attr(0), {}, x.data(), nA, theta.data(), 1.5, -0.7, sc,
                 &c.portable};
-            const double d1 = lpsKernels(width).dilatation(fastView, 1, kBefore, kBefore + nb);
-            const double d2 =
-                lpsKernelsPortable().dilatation(portableView, 1, kBefore, kBefore + nb);
-            EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
-            double fast[3], portable[3];
-            lpsKernels(width).force(fastView, 1, kBefore, kBefore + nb, 0.3, 0.8, fast);
-            lpsKernelsPortable().force(portableView, 1, kBefore, kBefore + nb, 0.3, 0.8, portable);
-            EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
-            (fewRows ? sharedBroken : broken) += c.expectSameBonds();
+            // Twice: the second pass meets the bonds the first one broke.
+            for (int pass = 0; pass < 2; ++pass) {
+              const double d1 = lpsKernels(width).dilatation(fastView, 1, kBefore, kBefore + nb);
+              const double d2 =
+                  lpsKernelsPortable().dilatation(portableView, 1, kBefore, kBefore + nb);
+              EXPECT_EQ(0, std::memcmp(&d1, &d2, sizeof d1)) << nb << " bonds";
+              double fast[3], portable[3];
+              lpsKernels(width).force(fastView, 1, kBefore, kBefore + nb, 0.3, 0.8, fast);
+              lpsKernelsPortable().force(portableView, 1, kBefore, kBefore + nb, 0.3, 0.8,
+                                         portable);
+              EXPECT_EQ(0, std::memcmp(fast, portable, sizeof fast)) << nb << " bonds";
+              const std::size_t n = c.expectSameBonds();
+              if (pass == 1) (fewRows ? sharedBroken : broken) += n;
+            }
           }
       }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";

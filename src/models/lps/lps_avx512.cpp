@@ -33,7 +33,9 @@ struct Particle {
   const __m512d invMj = r.c3, thj = pick8(v.theta, j);
   const __m512d ext = _mm512_sub_pd(r.len, len0);
   if (v.criticalStretch > 0) {
-    const __mmask8 over = _mm512_mask_cmp_pd_mask(in, ext, _mm512_mul_pd(c.sc, len0), _CMP_GT_OQ);
+    // Bonds of weight 0 have broken already: only the others are judged.
+    const __mmask8 live = _mm512_mask_cmp_pd_mask(in, w, _mm512_setzero_pd(), _CMP_NEQ_UQ);
+    const __mmask8 over = _mm512_mask_cmp_pd_mask(live, ext, _mm512_mul_pd(c.sc, len0), _CMP_GT_OQ);
     if (over) {
       break8(over, b0, b, v.attr, 3, v.bonds, v.rows);
       w = _mm512_maskz_mov_pd(static_cast<__mmask8>(~over), w);

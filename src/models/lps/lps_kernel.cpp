@@ -50,8 +50,9 @@ inline void forceBond(const LpsView& v, const double* xi, std::size_t b0, std::s
   double r[3];
   const double len = lengthTo(xi, xj, r);
   const double ext = len - ab.len0;
-  // Both ends judge a bond from the same numbers, so it breaks on both sides at once.
-  if (v.criticalStretch > 0 && ext > v.criticalStretch * ab.len0) {
+  // Both ends judge a bond from the same numbers, so it breaks on both sides at once. A
+  // bond of weight 0 has broken already (and is dead): it is not judged again.
+  if (v.criticalStretch > 0 && ab.w != 0 && ext > v.criticalStretch * ab.len0) {
     ab.w = 0;
     v.attr[3 * b + 1] = 0;
     v.bonds->kill(b);
@@ -160,7 +161,8 @@ struct Pairs {
     const __m256d thj = _mm256_set_pd(v.theta[j[3]], v.theta[j[2]], v.theta[j[1]], v.theta[j[0]]);
     const __m256d ext = _mm256_sub_pd(f.len, len0);
     if (v.criticalStretch > 0) {
-      const __m256d over = _mm256_cmp_pd(ext, _mm256_mul_pd(sc, len0), _CMP_GT_OQ);
+      const __m256d over = _mm256_and_pd(_mm256_cmp_pd(ext, _mm256_mul_pd(sc, len0), _CMP_GT_OQ),
+                                         _mm256_cmp_pd(w, _mm256_setzero_pd(), _CMP_NEQ_UQ));
       if (const int m = _mm256_movemask_pd(over)) {
         for (int k = 0; k < 4; ++k)
           if (m & (1 << k)) {
