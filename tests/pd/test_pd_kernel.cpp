@@ -3,6 +3,7 @@
 // and without bonds breaking, and leave the bonds before and after the particle's alone.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstring>
@@ -89,7 +90,12 @@ struct Case {
       }
     fast.renumberPartners() = partner;  // the partners' row offsets are made from these
     classes.update(fast);
+    for (std::size_t b = 0; b < total; ++b)
+      secondHalf.insert(secondHalf.end(), rowOf(classes.rows(), b) + 2,
+                        rowOf(classes.rows(), b) + 4);
   }
+
+  std::vector<double> secondHalf;  // each pair row's second half as made
 
   // After the kernels: the same bonds broke in both sets, and each fast bond's row follows
   // its attributes; returns how many bonds are broken.
@@ -111,6 +117,10 @@ struct Case {
       if (b + 1 < total && !last) {
         EXPECT_EQ(0, std::memcmp(rowOf(r, b) + 2, attr + stride * (b + 1), 2 * sizeof(double)))
             << "bond " << b << ": its pair row follows the next bond";
+      }
+      if (last) {
+        EXPECT_EQ(0, std::memcmp(rowOf(r, b) + 2, &secondHalf[2 * b], 2 * sizeof(double)))
+            << "bond " << b << ": the next particle's kernel left its pair row alone";
       }
       broken += attr[stride * b + 1] == 0;
     }
@@ -141,6 +151,10 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
               for (std::size_t after : {std::size_t{0}, kAfter}) {
                 SCOPED_TRACE(static_cast<int>(width));
                 Case c(rng, x, nA, shared, fewRows, 2, {kBefore, na, nb, after});
+                // The other particles' pair offsets, which no kernel of these two may write.
+                const std::uint32_t* pair = c.classes.rows().pair;
+                const std::vector<std::uint32_t> before(pair, pair + kBefore),
+                    beyond(pair + c.fast.begin(3), pair + c.total);
                 // Twice: the second pass meets the bonds the first one broke.
                 for (int pass = 0; pass < 2; ++pass) {
                   double fast[3 * 4], portable[3 * 4];
@@ -162,6 +176,8 @@ TEST(PdKernel, PmbFastKernelMatchesPortableBitwise) {
                   const std::size_t n = c.expectSameBonds();
                   if (pass == 1) (fewRows ? sharedBroken : broken) += n;
                 }
+                EXPECT_TRUE(std::equal(before.begin(), before.end(), pair));
+                EXPECT_TRUE(std::equal(beyond.begin(), beyond.end(), pair + c.fast.begin(3)));
               }
   EXPECT_GT(broken, 50u) << "some bonds must break for the check to mean anything";
   EXPECT_GT(sharedBroken, 50u);

@@ -96,6 +96,9 @@ void PeriModel::prepare(Context& ctx) {
       double* a = B.attr(b);
       // A restart restored XI and WEIGHT; a fresh bond has XI = 0 and is intact.
       const bool intact = B.alive(b) && (a[XI] == 0 || a[WEIGHT] != 0);
+      // A restored weight of 0 broke before: dead from here, as the kernels, which judge only
+      // bonds of nonzero weight, take it to be (a file may not say it is dead).
+      if (!intact && B.alive(b)) B.kill(b);
       const double* Xj = P.fixed(B.partner(b));
       const double dx = Xi[0] - Xj[0], dy = Xi[1] - Xj[1], dz = Xi[2] - Xj[2];
       a[XI] = std::sqrt(dx * dx + dy * dy + dz * dz);
